@@ -1,0 +1,20 @@
+// A concept is what a command returns and later commands take: a mesh, a model,
+// a load, a result... (code_aster's "sd"). Operators wrap kernel objects in a
+// Concept subclass; the language layer holds them as typed Lua userdata.
+#pragma once
+#include <memory>
+#include <string>
+
+namespace aster {
+
+class Concept {
+ public:
+  virtual ~Concept() = default;
+  // code_aster's type name, e.g. "maillage_sdaster"; the catalogue checks it.
+  virtual std::string typeName() const = 0;
+  std::string name;  // the study's variable name, when known
+};
+
+using ConceptPtr = std::shared_ptr<Concept>;
+
+}  // namespace aster
