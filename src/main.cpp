@@ -1,1 +1,101 @@
-int main() { return 0; }
+// aster-lite: runs a code_aster-style study written in Lua.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/messages.hpp"
+#include "lang/catalogue.hpp"
+#include "lang/docgen.hpp"
+#include "lang/interpreter.hpp"
+#include "lang/session.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: aster-lite [options] STUDY.lua\n"
+    "\n"
+    "Runs a study file written in Lua with code_aster's commands.\n"
+    "\n"
+    "options:\n"
+    "  --output-dir DIR  where results, tables and plots go\n"
+    "                    (default: a folder named after the study, next to it)\n"
+    "  -u N=PATH         bind file PATH to logical unit N (as DEFI_FICHIER does)\n"
+    "  --quiet           print only alarms, errors and check results\n"
+    "  --doc FILE        write the command reference (Markdown) to FILE and exit\n"
+    "  --version         print the version and exit\n"
+    "  --help            print this help and exit\n"
+    "\n"
+    "exit status: 0 the study ran and every check was OK, 1 a check was NOOK,\n"
+    "             2 a fatal error (<F>) stopped the study\n";
+
+int usageError(const std::string& what) {
+  std::fprintf(stderr, "<F> <aster-lite> %s\n%s", what.c_str(), kUsage);
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  namespace fs = std::filesystem;
+  aster::lang::Session session;
+  std::string study, outputDir;
+  bool quiet = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&](const char* opt) -> std::string {
+      if (i + 1 >= argc) throw std::runtime_error(std::string(opt) + " needs a value");
+      return argv[++i];
+    };
+    try {
+      if (a == "--help" || a == "-h") {
+        std::fputs(kUsage, stdout);
+        return 0;
+      } else if (a == "--version") {
+        std::printf("aster-lite %s\n", ASTER_VERSION);
+        return 0;
+      } else if (a == "--quiet" || a == "-q") {
+        quiet = true;
+      } else if (a == "--output-dir") {
+        outputDir = next("--output-dir");
+      } else if (a == "-u") {
+        const std::string spec = next("-u");
+        const auto eq = spec.find('=');
+        char* end = nullptr;
+        const long unit = std::strtol(spec.c_str(), &end, 10);
+        if (eq == std::string::npos || end != spec.c_str() + eq || unit <= 0)
+          return usageError("-u expects N=PATH with a positive unit number N, got '" + spec + "'");
+        session.units[static_cast<int>(unit)] = fs::absolute(spec.substr(eq + 1));
+      } else if (a == "--doc") {
+        const std::string file = next("--doc");
+        std::ofstream out(file, std::ios::binary);
+        out << aster::lang::commandReference(aster::lang::Catalogue::builtin());
+        if (!out) return usageError("cannot write " + file);
+        return 0;
+      } else if (!a.empty() && a[0] == '-') {
+        return usageError("unknown option " + a);
+      } else if (study.empty()) {
+        study = a;
+      } else {
+        return usageError("one study at a time: got " + study + " and " + a);
+      }
+    } catch (const std::exception& e) {
+      return usageError(e.what());
+    }
+  }
+  if (study.empty()) return usageError("no study file given");
+  if (!fs::exists(study)) return usageError("the study file " + study + " does not exist");
+
+  aster::Messages::setQuiet(quiet);
+  session.studyPath = study;
+  session.outputDir = outputDir.empty() ? fs::path(study).replace_extension("") : fs::path(outputDir);
+  try {
+    aster::lang::Interpreter interpreter(session);
+    return interpreter.runFile(study);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "<F> <aster-lite> %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,10 @@
+return PROC{ nom = 'DEBUT',
+  fr = "Starts a study. Optional in aster-lite: a study may begin with its first command.",
+  SIMP{ 'PAR_LOT', typ = 'TXM', defaut = 'NON', into = {'OUI', 'NON'},
+        fr = "Accepted for compatibility; studies always run command by command." },
+  SIMP{ 'LANG', typ = 'TXM', into = {'FR', 'EN'}, fr = "Accepted for compatibility." },
+  FACT{ 'CODE', fr = "Accepted for compatibility (code_aster test-suite header).",
+    SIMP{ 'NIV_PUB_WEB', typ = 'TXM', into = {'INTERNET', 'INTRANET'} },
+  },
+  FACT{ 'IMPR_MACRO', fr = "Accepted for compatibility.", SIMP{ 'NIVEAU', typ = 'I' } },
+}

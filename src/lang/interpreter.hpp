@@ -1,0 +1,30 @@
+// Runs a study: a Lua 5.4 state where every catalogue command is a global
+// function, `X = CMD{KEY=value, ...}`, and concepts are typed userdata.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "lang/session.hpp"
+
+namespace aster::lang {
+
+class Interpreter {
+ public:
+  explicit Interpreter(Session& session);
+  ~Interpreter();
+  Interpreter(const Interpreter&) = delete;
+  Interpreter& operator=(const Interpreter&) = delete;
+
+  // Exit status as the program returns it: 0 all checks OK, 1 a check NOOK, 2 fatal error.
+  int runFile(const std::string& path);
+  int runString(const std::string& code, const std::string& chunkName);
+
+  struct State;
+
+ private:
+  int finish(int status);
+  std::unique_ptr<State> state_;
+  Session& session_;
+};
+
+}  // namespace aster::lang

@@ -1,0 +1,39 @@
+// What a running study shares with every command operator: where the study is,
+// where results go, the files bound to units, the checks made so far.
+#pragma once
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+
+#include "core/concept.hpp"
+
+namespace aster::lang {
+
+struct Session {
+  std::filesystem::path studyPath;  // as given on the command line
+  std::filesystem::path outputDir;  // results, tables, plots
+  std::map<int, std::filesystem::path> units;  // DEFI_FICHIER and -u N=path
+
+  // Where the command being run was called from: "studies/a.lua:12".
+  std::string where;
+  std::string command;
+
+  // TEST_RESU and friends.
+  int checksOk = 0;
+  int checksNook = 0;
+
+  // The study's name for a concept ("MAIL"), or a generated one: set by the interpreter.
+  std::function<std::string(const Concept&)> nameOf = [](const Concept& c) {
+    return c.name.empty() ? c.typeName() : c.name;
+  };
+
+  // A path relative to the study's folder, as code_aster users expect for FICHIER=.
+  std::filesystem::path studyRelative(const std::string& file) const;
+  // The file bound to a unit, or the default "<study>.<extension>" beside the study.
+  std::filesystem::path unitPath(int unit, const std::string& defaultExtension) const;
+  // Makes sure the output folder exists; returns path/name inside it.
+  std::filesystem::path outputFile(const std::string& name) const;
+};
+
+}  // namespace aster::lang
