@@ -5,32 +5,37 @@
 
 namespace aster {
 
-int editDistance(const std::string& a, const std::string& b) {
+namespace {
+int distance(const std::string& a, const std::string& b, bool ignoreCase) {
   std::vector<int> prev(b.size() + 1), cur(b.size() + 1);
   for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = static_cast<int>(j);
   for (std::size_t i = 1; i <= a.size(); ++i) {
     cur[0] = static_cast<int>(i);
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      const bool same = std::toupper(static_cast<unsigned char>(a[i - 1])) ==
-                        std::toupper(static_cast<unsigned char>(b[j - 1]));
+      const bool same = ignoreCase ? std::toupper(static_cast<unsigned char>(a[i - 1])) ==
+                                         std::toupper(static_cast<unsigned char>(b[j - 1]))
+                                   : a[i - 1] == b[j - 1];
       cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (same ? 0 : 1)});
     }
     std::swap(prev, cur);
   }
   return prev[b.size()];
 }
+}  // namespace
+
+int editDistance(const std::string& a, const std::string& b) { return distance(a, b, true); }
 
 std::vector<std::string> closestNames(const std::string& word, const std::vector<std::string>& candidates,
                                       std::size_t maxCount) {
   // Allow about one edit per three letters, at least two.
   const int limit = std::max<int>(2, static_cast<int>(word.size()) / 3);
-  std::vector<std::pair<int, std::string>> scored;
+  // Ties go to the candidate that also matches the letter case (DEBUT before debug).
+  std::vector<std::pair<std::pair<int, int>, std::string>> scored;
   for (const auto& c : candidates) {
     const int d = editDistance(word, c);
-    if (d <= limit) scored.emplace_back(d, c);
+    if (d <= limit) scored.push_back({{d, distance(word, c, false)}, c});
   }
-  std::stable_sort(scored.begin(), scored.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::sort(scored.begin(), scored.end());
   std::vector<std::string> out;
   for (const auto& s : scored) {
     if (out.size() >= maxCount) break;

@@ -1,0 +1,90 @@
+// The Lua layer: commands as globals, file:line in messages, FIN, plain Lua.
+#include <gtest/gtest.h>
+
+#include "lang/interpreter.hpp"
+
+using namespace aster::lang;
+
+namespace {
+
+struct StudyRun {
+  int status;
+  std::string out, err;
+};
+
+StudyRun run(const std::string& code) {
+  Session session;
+  session.studyPath = "etude.lua";
+  session.outputDir = "etude";
+  Interpreter interpreter(session);
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  const int status = interpreter.runString(code, "@etude.lua");
+  StudyRun r{status, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
+  return r;
+}
+
+}  // namespace
+
+TEST(Interpreter, PlainLuaWorksInAStudy) {
+  const StudyRun r = run("DEBUT{}\nlocal s = 0\nfor i = 1, 4 do s = s + i end\nprint(string.format('%d', s))\nFIN{}\n");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out, "10\n");
+}
+
+TEST(Interpreter, FinEndsTheStudy) {
+  const StudyRun r = run("FIN{}\nerror('not reached')\n");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.err, "");
+}
+
+TEST(Interpreter, DebutAndFinMayBeOmitted) { EXPECT_EQ(run("print('ok')").status, 0); }
+
+TEST(Interpreter, RejectionNamesCommandFileLineKeywordAndExpectation) {
+  const StudyRun r = run("DEBUT{}\n\nDEBUT{PAR_LOT = 'PEUT-ETRE'}\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err,
+            "<F> <DEBUT> etude.lua:3: keyword PAR_LOT = 'PEUT-ETRE' is not allowed; allowed values: 'OUI', 'NON'\n");
+}
+
+TEST(Interpreter, FactorKeywordGivenAsTableListOrUnderscoreF) {
+  EXPECT_EQ(run("DEBUT{CODE = {NIV_PUB_WEB = 'INTERNET'}}").status, 0);
+  EXPECT_EQ(run("DEBUT{CODE = _F{NIV_PUB_WEB = 'INTERNET'}}").status, 0);
+  EXPECT_EQ(run("DEBUT{CODE = {{NIV_PUB_WEB = 'INTERNET'}}}").status, 0);
+  const StudyRun r = run("DEBUT{CODE = {{NIV_PUB_WEB = 'INTERNET'}, {NIV_PUB_WEB = 'INTRANET'}}}");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <DEBUT> etude.lua:1: factor keyword CODE is given 2 times; expected at most 1\n");
+}
+
+TEST(Interpreter, UnknownCommandSuggestsTheClosest) {
+  const StudyRun r = run("DEBUT{}\nDEBU{}\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <LUA> etude.lua:2: 'DEBU' is not defined; did you mean DEBUT or debug?\n");
+}
+
+TEST(Interpreter, CallWithoutATable) {
+  const StudyRun r = run("DEBUT('OUI')\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <DEBUT> etude.lua:1: DEBUT expects a table of keywords: DEBUT{KEY=value, ...}, got 'OUI'\n");
+}
+
+TEST(Interpreter, ReuseIsRefusedWhereTheCatalogueSaysSo) {
+  const StudyRun r = run("DEBUT{reuse = 1}\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <DEBUT> etude.lua:1: DEBUT does not accept reuse=\n");
+}
+
+TEST(Interpreter, LuaSyntaxAndRuntimeErrorsAreFatal) {
+  StudyRun r = run("DEBUT{\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("<F> <LUA> etude.lua:2:", 0), 0u) << r.err;
+  r = run("local x = nil\nprint(x.y)\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("<F> <LUA> etude.lua:2: attempt to index a nil value", 0), 0u) << r.err;
+}
+
+TEST(Interpreter, ErrorInsideAStudyFunctionPointsAtTheCall) {
+  const StudyRun r = run("local function f()\n  DEBUT{LANG = 'DE'}\nend\nf()\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("<F> <DEBUT> etude.lua:2:", 0), 0u) << r.err;
+}

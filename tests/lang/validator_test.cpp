@@ -1,0 +1,221 @@
+// The generic validator: every rejection names the keyword and the expectation;
+// defaults are filled; numbers are typed as the catalogue says.
+#include <gtest/gtest.h>
+
+#include "lang/catalogue.hpp"
+#include "lang/validator.hpp"
+
+using namespace aster;
+using namespace aster::lang;
+
+namespace {
+
+struct FakeConcept : Concept {
+  explicit FakeConcept(std::string t) : type(std::move(t)) {}
+  std::string typeName() const override { return type; }
+  std::string type;
+};
+
+const char* kEssai = R"(
+return OPER{ nom = 'ESSAI', sd_prod = 'modele_sdaster',
+  SIMP{ 'MAILLAGE', statut = 'o', typ = 'maillage_sdaster' },
+  SIMP{ 'FORMAT', typ = 'TXM', defaut = 'ASTER', into = {'ASTER', 'MED', 'GMSH'} },
+  SIMP{ 'COEF', typ = 'R', defaut = 1, val_min = 0 },
+  SIMP{ 'NIVEAU', typ = 'I', defaut = 1, into = {1, 2} },
+  SIMP{ 'VALE', typ = 'R', min = 2, max = '**' },
+  FACT{ 'AFFE', statut = 'o', max = '**',
+    regles = { UN_PARMI('TOUT', 'GROUP_MA') },
+    SIMP{ 'TOUT', typ = 'TXM', into = {'OUI'} },
+    SIMP{ 'GROUP_MA', typ = 'grma', max = '**' },
+    SIMP{ 'MODELISATION', statut = 'o', typ = 'TXM', into = {'D_PLAN', 'C_PLAN'} },
+  },
+  FACT{ 'NEWTON', statut = 'd',
+    SIMP{ 'REAC_ITER', typ = 'I', defaut = 1 },
+  },
+  SIMP{ 'FORMULATION', typ = 'TXM', defaut = 'DISCRETE', into = {'DISCRETE', 'CONTINUE'} },
+  BLOC{ 'b_continue', condition = { FORMULATION = 'CONTINUE' },
+    SIMP{ 'COEF_CONT', typ = 'R', defaut = 100 },
+  },
+  regles = { EXCLUS('VALE', 'COEF') },
+}
+)";
+
+const CommandSpec& essai() {
+  static const Catalogue cat = Catalogue::fromSources({{"ESSAI", kEssai}});
+  return *cat.find("ESSAI");
+}
+
+Keywords affe(const std::string& key, Value v) {
+  Keywords k;
+  k.setSimple(key, {v});
+  k.setSimple("MODELISATION", {Value::ofText("D_PLAN")});
+  return k;
+}
+
+Keywords minimalCall() {
+  Keywords call;
+  call.setSimple("MAILLAGE", {Value::ofConcept(std::make_shared<FakeConcept>("maillage_sdaster"))});
+  call.setFactor("AFFE", {affe("TOUT", Value::ofText("OUI"))});
+  return call;
+}
+
+std::string rejection(const Keywords& call, std::string* keyword = nullptr) {
+  try {
+    validate(essai(), call);
+  } catch (const ValidationError& e) {
+    if (keyword) *keyword = e.keyword;
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+}  // namespace
+
+TEST(Validator, FillsDefaultsAndTypesNumbers) {
+  const Keywords k = validate(essai(), minimalCall());
+  EXPECT_EQ(k.text("FORMAT"), "ASTER");
+  EXPECT_EQ(k.value("COEF").kind, Value::Kind::Real);
+  EXPECT_DOUBLE_EQ(k.real("COEF"), 1.0);
+  EXPECT_EQ(k.value("NIVEAU").kind, Value::Kind::Integer);
+  EXPECT_EQ(k.integer("NIVEAU"), 1);
+  ASSERT_EQ(k.factor("NEWTON").size(), 1u);  // statut 'd': created with its defaults
+  EXPECT_EQ(k.factor("NEWTON")[0].integer("REAC_ITER"), 1);
+  EXPECT_FALSE(k.has("COEF_CONT"));  // its block is inactive
+  EXPECT_FALSE(k.has("VALE"));
+}
+
+TEST(Validator, BlockKeywordsApplyWhenTheConditionHolds) {
+  Keywords call = minimalCall();
+  call.setSimple("FORMULATION", {Value::ofText("CONTINUE")});
+  const Keywords k = validate(essai(), call);
+  EXPECT_DOUBLE_EQ(k.real("COEF_CONT"), 100.0);
+}
+
+TEST(Validator, KeywordOfAnInactiveBlockSaysWhenItApplies) {
+  Keywords call = minimalCall();
+  call.setSimple("COEF_CONT", {Value::ofReal(10)});
+  EXPECT_EQ(rejection(call), "keyword COEF_CONT is only allowed when FORMULATION = 'CONTINUE'");
+}
+
+TEST(Validator, UnknownKeywordSuggestsTheClosest) {
+  Keywords call = minimalCall();
+  call.setSimple("FORMT", {Value::ofText("MED")});
+  std::string key;
+  const std::string msg = rejection(call, &key);
+  EXPECT_EQ(key, "FORMT");
+  EXPECT_NE(msg.find("keyword FORMT is not a keyword of ESSAI; did you mean FORMAT?"), std::string::npos) << msg;
+}
+
+TEST(Validator, MissingMandatoryNamesTheExpectedType) {
+  Keywords call = minimalCall();
+  call.erase("MAILLAGE");
+  EXPECT_EQ(rejection(call), "keyword MAILLAGE is mandatory and missing (expected a maillage_sdaster)");
+}
+
+TEST(Validator, WrongConceptType) {
+  Keywords call = minimalCall();
+  call.setSimple("MAILLAGE", {Value::ofConcept(std::make_shared<FakeConcept>("modele_sdaster"))});
+  EXPECT_EQ(rejection(call), "keyword MAILLAGE expects a maillage_sdaster, got a modele_sdaster");
+}
+
+TEST(Validator, WrongScalarTypes) {
+  Keywords call = minimalCall();
+  call.setSimple("COEF", {Value::ofText("un")});
+  EXPECT_EQ(rejection(call), "keyword COEF expects a real, got 'un'");
+  call = minimalCall();
+  call.setSimple("NIVEAU", {Value::ofReal(1.5)});
+  EXPECT_EQ(rejection(call), "keyword NIVEAU expects an integer, got 1.5");
+}
+
+TEST(Validator, ValueNotAllowedListsTheAllowedOnes) {
+  Keywords call = minimalCall();
+  call.setSimple("FORMAT", {Value::ofText("MEDD")});
+  EXPECT_EQ(rejection(call),
+            "keyword FORMAT = 'MEDD' is not allowed; allowed values: 'ASTER', 'MED', 'GMSH'; did you mean 'MED'?");
+}
+
+TEST(Validator, BoundsOnNumbers) {
+  Keywords call = minimalCall();
+  call.setSimple("COEF", {Value::ofReal(-2)});
+  EXPECT_EQ(rejection(call), "keyword COEF = -2 is below its minimum 0");
+}
+
+TEST(Validator, NumberOfValues) {
+  Keywords call = minimalCall();
+  call.setSimple("VALE", {Value::ofReal(1)});
+  EXPECT_EQ(rejection(call), "keyword VALE needs at least 2 values, got 1");
+  call = minimalCall();
+  call.setSimple("FORMAT", {Value::ofText("MED"), Value::ofText("ASTER")});
+  EXPECT_EQ(rejection(call), "keyword FORMAT takes at most 1 value, got 2");
+}
+
+TEST(Validator, FactorOccurrences) {
+  Keywords call = minimalCall();
+  call.erase("AFFE");
+  EXPECT_EQ(rejection(call), "factor keyword AFFE is mandatory and missing");
+  call = minimalCall();
+  call.setFactor("NEWTON", {Keywords(), Keywords()});
+  EXPECT_EQ(rejection(call), "factor keyword NEWTON is given 2 times; expected at most 1");
+}
+
+TEST(Validator, ErrorsInsideAFactorNameTheOccurrence) {
+  Keywords call = minimalCall();
+  Keywords bad = affe("TOUT", Value::ofText("OUI"));
+  bad.setSimple("MODELISATION", {Value::ofText("3D")});
+  call.setFactor("AFFE", {affe("TOUT", Value::ofText("OUI")), bad});
+  std::string key;
+  EXPECT_EQ(rejection(call, &key),
+            "AFFE[2]: keyword MODELISATION = '3D' is not allowed; allowed values: 'D_PLAN', 'C_PLAN'");
+  EXPECT_EQ(key, "AFFE[2]/MODELISATION");
+}
+
+TEST(Validator, MutuallyExclusiveKeywords) {
+  Keywords call = minimalCall();
+  Keywords both = affe("TOUT", Value::ofText("OUI"));
+  both.setSimple("GROUP_MA", {Value::ofText("HAUT")});
+  call.setFactor("AFFE", {both});
+  EXPECT_EQ(rejection(call), "AFFE[1]: exactly one of TOUT, GROUP_MA is required, got TOUT, GROUP_MA "
+                             "(rule UN_PARMI('TOUT', 'GROUP_MA'))");
+  call = minimalCall();
+  call.setSimple("VALE", {Value::ofReal(1), Value::ofReal(2)});
+  call.setSimple("COEF", {Value::ofReal(2)});
+  EXPECT_EQ(rejection(call), "keywords VALE, COEF are mutually exclusive (rule EXCLUS('VALE', 'COEF'))");
+}
+
+TEST(Validator, OneOfIsRequired) {
+  Keywords call = minimalCall();
+  Keywords none;
+  none.setSimple("MODELISATION", {Value::ofText("D_PLAN")});
+  call.setFactor("AFFE", {none});
+  EXPECT_EQ(rejection(call), "AFFE[1]: exactly one of TOUT, GROUP_MA is required, got none "
+                             "(rule UN_PARMI('TOUT', 'GROUP_MA'))");
+}
+
+TEST(Validator, SimpleKeywordGivenATable) {
+  Keywords call = minimalCall();
+  call.setFactor("FORMAT", {Keywords()});
+  EXPECT_EQ(rejection(call), "keyword FORMAT expects a text, got a table of keywords");
+}
+
+TEST(Catalogue, RejectsADefaultOutsideItsAllowedValues) {
+  const char* bad = "return PROC{ nom = 'MAUVAIS', SIMP{ 'A', typ = 'TXM', defaut = 'X', into = {'Y'} } }";
+  try {
+    Catalogue::fromSources({{"MAUVAIS", bad}});
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("commands/MAUVAIS.lua: MAUVAIS/A: default 'X' is not among the allowed "
+                                         "values"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Catalogue, NameMustMatchTheFile) {
+  EXPECT_THROW(Catalogue::fromSources({{"AUTRE", "return PROC{ nom = 'MAUVAIS' }"}}), Error);
+}
+
+TEST(Catalogue, BuiltinLoads) {
+  const Catalogue& cat = Catalogue::builtin();
+  ASSERT_NE(cat.find("DEBUT"), nullptr);
+  ASSERT_NE(cat.find("FIN"), nullptr);
+}
