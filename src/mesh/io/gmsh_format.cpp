@@ -1,0 +1,362 @@
+#include "mesh/io/gmsh_format.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include "core/error.hpp"
+#include "mesh/node_ordering.hpp"
+
+namespace aster::mesh {
+
+namespace {
+
+// One gmsh session per call: gmsh keeps global state, it must not leak between calls.
+class GmshSession {
+ public:
+  GmshSession() {
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+  }
+  ~GmshSession() {
+    try {
+      gmsh::finalize();
+    } catch (...) {
+    }
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+// gmsh reports errors to its logger (and sometimes throws): turn both into aster::Error.
+void checkGmsh(const std::string& context) {
+  std::string last;
+  gmsh::logger::getLastError(last);
+  if (!last.empty()) throw Error(context + ": gmsh error: " + last);
+}
+
+int gmshType(CellType t) {
+  switch (t) {
+    case CellType::POI1: return 15;
+    case CellType::SEG2: return 1;
+    case CellType::SEG3: return 8;
+    case CellType::SEG4: return 26;
+    case CellType::TRIA3: return 2;
+    case CellType::TRIA6: return 9;
+    case CellType::QUAD4: return 3;
+    case CellType::QUAD8: return 16;
+    case CellType::QUAD9: return 10;
+    case CellType::TETRA4: return 4;
+    case CellType::TETRA10: return 11;
+    case CellType::PENTA6: return 6;
+    case CellType::PENTA15: return 18;
+    case CellType::PENTA18: return 13;
+    case CellType::PYRAM5: return 7;
+    case CellType::PYRAM13: return 19;
+    case CellType::HEXA8: return 5;
+    case CellType::HEXA20: return 17;
+    case CellType::HEXA27: return 12;
+    case CellType::TRIA7: break;
+  }
+  throw Error("cell type " + cellTypeName(t) + " cannot be written to gmsh (no 7-node triangle in gmsh)");
+}
+
+CellType asterType(int gmshElementType, const std::string& path) {
+  for (int t = 0; t < kCellTypeCount; ++t) {
+    const auto type = static_cast<CellType>(t);
+    if (type != CellType::TRIA7 && gmshType(type) == gmshElementType) return type;
+  }
+  std::string name;
+  int dim = 0, order = 0, nn = 0, nv = 0;
+  std::vector<double> coords;
+  try {
+    gmsh::model::mesh::getElementProperties(gmshElementType, name, dim, order, nn, coords, nv);
+  } catch (...) {
+    name = "?";
+  }
+  throw Error(path + ": gmsh element type " + std::to_string(gmshElementType) + " (" + name +
+              ") has no code_aster equivalent");
+}
+
+bool hasExtension(const std::string& path, const std::string& ext) {
+  if (path.size() < ext.size()) return false;
+  std::string tail = path.substr(path.size() - ext.size());
+  std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return std::tolower(c); });
+  return tail == ext;
+}
+
+Mesh readCurrentModel(const std::string& path) {
+  // Physical groups of each entity.
+  gmsh::vectorpair physicals;
+  gmsh::model::getPhysicalGroups(physicals);
+  std::map<std::pair<int, int>, std::vector<std::string>> groupsOfEntity;
+  std::vector<std::string> groupOrder;
+  for (const auto& [dim, tag] : physicals) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    if (name.empty()) name = "GM" + std::to_string(tag);
+    if (std::find(groupOrder.begin(), groupOrder.end(), name) == groupOrder.end()) groupOrder.push_back(name);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    for (int e : entities) groupsOfEntity[{dim, e}].push_back(name);
+  }
+
+  struct RawCell {
+    CellType type;
+    std::size_t tag;
+    std::vector<std::size_t> nodes;
+  };
+  std::vector<RawCell> cells;
+  std::map<std::string, std::vector<int>> groupCells;
+  std::set<std::size_t> seenCells;
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities);
+  for (const auto& [dim, tag] : entities) {
+    const auto groups = groupsOfEntity.find({dim, tag});
+    if (dim == 0 && groups == groupsOfEntity.end()) continue;
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+    gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, tag);
+    for (std::size_t k = 0; k < types.size(); ++k) {
+      const CellType type = asterType(types[k], path);
+      const int nn = nodeCount(type);
+      const auto& perm = asterFromForeign(NodeConvention::Gmsh, type);
+      for (std::size_t e = 0; e < elementTags[k].size(); ++e) {
+        if (!seenCells.insert(elementTags[k][e]).second) continue;  // already met in another entity
+        RawCell c{type, elementTags[k][e], std::vector<std::size_t>(nn)};
+        for (int j = 0; j < nn; ++j) c.nodes[j] = nodeTags[k][e * nn + perm[j]];
+        if (groups != groupsOfEntity.end())
+          for (const auto& g : groups->second) groupCells[g].push_back(static_cast<int>(cells.size()));
+        cells.push_back(std::move(c));
+      }
+    }
+  }
+
+  std::vector<std::size_t> nodeTags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(nodeTags, coords, parametric, -1, -1, false, false);
+  std::unordered_map<std::size_t, std::size_t> position;
+  for (std::size_t i = 0; i < nodeTags.size(); ++i) position[nodeTags[i]] = i;
+  std::set<std::size_t> used;
+  for (const auto& c : cells)
+    for (auto n : c.nodes) {
+      if (!position.count(n))
+        throw Error(path + ": element " + std::to_string(c.tag) + " refers to node " + std::to_string(n) +
+                    " that is not defined");
+      used.insert(n);
+    }
+
+  Mesh mesh;
+  bool flat = true;
+  std::unordered_map<std::size_t, int> index;
+  for (auto tag : used) {  // ascending tags
+    const double* x = &coords[3 * position[tag]];
+    if (x[2] != 0.0) flat = false;
+    index[tag] = mesh.addNode({x[0], x[1], x[2]}, "N" + std::to_string(tag));
+  }
+  mesh.setSpaceDimension(flat ? 2 : 3);
+  std::vector<int> conn;
+  for (const auto& c : cells) {
+    conn.clear();
+    for (auto n : c.nodes) conn.push_back(index[n]);
+    mesh.addCell(c.type, conn, "M" + std::to_string(c.tag));
+  }
+  for (const auto& g : groupOrder) {
+    auto& members = groupCells[g];
+    mesh.addCellGroup(g, members);
+  }
+  for (const auto& g : groupOrder) mesh.addNodeGroup(g, mesh.nodesOfCells(mesh.cellGroup(g)));
+  return mesh;
+}
+
+}  // namespace
+
+Mesh readGmshMesh(const std::string& path, const GmshReadOptions& options) {
+  if (!std::ifstream(path)) throw Error("cannot open the gmsh file '" + path + "'");
+  GmshSession session;
+  try {
+    for (const auto& [name, value] : options.numbers) gmsh::onelab::setNumber(name, {value});
+    gmsh::open(path);
+    checkGmsh(path);
+    if (hasExtension(path, ".geo")) {
+      gmsh::model::mesh::generate(gmsh::model::getDimension());
+      checkGmsh(path + " (meshing)");
+    }
+    Mesh mesh = readCurrentModel(path);
+    if (mesh.cellCount() == 0) throw Error(path + ": the gmsh file holds no mesh cell");
+    return mesh;
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(path + ": gmsh error: " + e.what());
+  } catch (...) {
+    std::string last;
+    gmsh::logger::getLastError(last);
+    throw Error(path + ": gmsh error: " + (last.empty() ? std::string("unknown") : last));
+  }
+}
+
+namespace {
+
+// Builds the gmsh model of a mesh: one discrete entity per (dimension, set of
+// groups) so that overlapping groups stay exact; returns the model name.
+std::string buildModel(const Mesh& mesh) {
+  const std::string model = "aster";
+  gmsh::model::add(model);
+  const auto groupNames = mesh.cellGroupNames();
+  std::vector<std::vector<int>> groupsOfCell(mesh.cellCount());
+  for (std::size_t g = 0; g < groupNames.size(); ++g)
+    for (int c : mesh.cellGroup(groupNames[g])) {
+      auto& list = groupsOfCell[c];
+      if (std::find(list.begin(), list.end(), static_cast<int>(g)) == list.end()) list.push_back(static_cast<int>(g));
+    }
+  std::map<std::pair<int, std::vector<int>>, int> entityOf;
+  std::vector<std::pair<int, int>> entityOrder;  // (dim, tag)
+  std::map<int, std::vector<int>> cellsOfEntity;
+  for (int c = 0; c < mesh.cellCount(); ++c) {
+    auto key = groupsOfCell[c];
+    std::sort(key.begin(), key.end());
+    const int dim = topologicalDimension(mesh.cellType(c));
+    auto it = entityOf.find({dim, key});
+    if (it == entityOf.end()) {
+      const int tag = gmsh::model::addDiscreteEntity(dim);
+      it = entityOf.emplace(std::make_pair(dim, key), tag).first;
+      entityOrder.emplace_back(dim, tag);
+    }
+    cellsOfEntity[it->second].push_back(c);
+  }
+  // All nodes on one entity (gmsh only needs them classified somewhere).
+  int nodeDim = 0, nodeEntity = 0;
+  if (entityOrder.empty()) {
+    nodeEntity = gmsh::model::addDiscreteEntity(0);
+  } else {
+    for (const auto& [d, t] : entityOrder)
+      if (d >= nodeDim) nodeDim = d, nodeEntity = t;
+    // Keep the first entity of the highest dimension.
+    for (const auto& [d, t] : entityOrder)
+      if (d == nodeDim) {
+        nodeEntity = t;
+        break;
+      }
+  }
+  std::vector<std::size_t> nodeTags(mesh.nodeCount());
+  for (int i = 0; i < mesh.nodeCount(); ++i) nodeTags[i] = static_cast<std::size_t>(i + 1);
+  gmsh::model::mesh::addNodes(nodeDim, nodeEntity, nodeTags, mesh.coordinates());
+
+  for (const auto& [dim, tag] : entityOrder) {
+    std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> byType;
+    for (int c : cellsOfEntity[tag]) {
+      const CellType t = mesh.cellType(c);
+      auto& [tags, nodes] = byType[gmshType(t)];
+      tags.push_back(static_cast<std::size_t>(c + 1));
+      const auto n = mesh.cellNodes(c);
+      const auto foreign = fromAsterOrder(NodeConvention::Gmsh, t, std::vector<int>(n.begin(), n.end()));
+      for (int k : foreign) nodes.push_back(static_cast<std::size_t>(k + 1));
+    }
+    for (const auto& [type, data] : byType) gmsh::model::mesh::addElementsByType(tag, type, data.first, data.second);
+  }
+  // Physical groups: one per group and dimension.
+  for (std::size_t g = 0; g < groupNames.size(); ++g) {
+    std::map<int, std::vector<int>> entitiesByDim;
+    for (const auto& [key, tag] : entityOf)
+      if (std::find(key.second.begin(), key.second.end(), static_cast<int>(g)) != key.second.end())
+        entitiesByDim[key.first].push_back(tag);
+    for (const auto& [dim, tags] : entitiesByDim) {
+      const int phys = gmsh::model::addPhysicalGroup(dim, tags);
+      gmsh::model::setPhysicalName(dim, phys, groupNames[g]);
+    }
+  }
+  return model;
+}
+
+void setWriteOptions(const GmshWriteOptions& options) {
+  if (options.version != 2.2 && options.version != 4.1)
+    throw Error("gmsh writer: MSH version must be 2.2 or 4.1, got " + std::to_string(options.version));
+  gmsh::option::setNumber("Mesh.MshFileVersion", options.version);
+  gmsh::option::setNumber("Mesh.Binary", options.binary ? 1 : 0);
+  gmsh::option::setNumber("Mesh.SaveAll", 0);
+}
+
+void writeModel(const std::string& path) {
+  gmsh::write(path);
+  checkGmsh("writing " + path);
+}
+
+}  // namespace
+
+void writeGmshMesh(const Mesh& mesh, const std::string& path, const GmshWriteOptions& options) {
+  writeGmshResults(mesh, path, {}, options);
+}
+
+void writeGmshResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
+                      const GmshWriteOptions& options) {
+  // Check the fields before touching any file.
+  for (const auto& inst : instants)
+    for (const auto& f : inst.fields)
+      if (f.components.empty() || f.values.size() != f.components.size() * static_cast<std::size_t>(mesh.nodeCount()))
+        throw Error("gmsh writer: field '" + f.name + "' has " + std::to_string(f.values.size()) +
+                    " values, expected " + std::to_string(mesh.nodeCount()) + " nodes x " +
+                    std::to_string(f.components.size()) + " components");
+  GmshSession session;
+  try {
+    setWriteOptions(options);
+    const std::string model = buildModel(mesh);
+    bool ungrouped = false;
+    {
+      std::vector<char> grouped(mesh.cellCount(), 0);
+      for (const auto& g : mesh.cellGroupNames())
+        for (int c : mesh.cellGroup(g)) grouped[c] = 1;
+      ungrouped = std::find(grouped.begin(), grouped.end(), 0) != grouped.end();
+    }
+    // Cells outside every physical group are only saved with SaveAll.
+    if (ungrouped) gmsh::option::setNumber("Mesh.SaveAll", 1);
+    writeModel(path);
+
+    std::vector<std::size_t> tags(mesh.nodeCount());
+    for (int i = 0; i < mesh.nodeCount(); ++i) tags[i] = static_cast<std::size_t>(i + 1);
+    std::map<std::string, int> views;
+    int step = 0;
+    for (const auto& inst : instants) {
+      for (const auto& f : inst.fields) {
+        const int nc = static_cast<int>(f.components.size());
+        auto addView = [&](const std::string& name, int width, auto value) {
+          auto it = views.find(name);
+          if (it == views.end()) it = views.emplace(name, gmsh::view::add(name)).first;
+          std::vector<double> data(static_cast<std::size_t>(mesh.nodeCount()) * width, 0.0);
+          for (int i = 0; i < mesh.nodeCount(); ++i)
+            for (int k = 0; k < width; ++k) data[static_cast<std::size_t>(i) * width + k] = value(i, k);
+          gmsh::view::addHomogeneousModelData(it->second, step, model, "NodeData", tags, data, inst.time, width);
+        };
+        if (nc == 1 || nc == 3 || nc == 9) {
+          addView(f.name, nc, [&](int i, int k) { return f.values[static_cast<std::size_t>(i) * nc + k]; });
+        } else if (nc == 2) {
+          addView(f.name, 3, [&](int i, int k) { return k < 2 ? f.values[static_cast<std::size_t>(i) * 2 + k] : 0.0; });
+        } else {
+          for (int c = 0; c < nc; ++c)
+            addView(f.name + "_" + f.components[c], 1,
+                    [&](int i, int) { return f.values[static_cast<std::size_t>(i) * nc + c]; });
+        }
+      }
+      ++step;
+    }
+    for (const auto& [name, tag] : views) {
+      gmsh::view::write(tag, path, true);
+      checkGmsh("writing view " + name + " to " + path);
+    }
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error("writing " + path + ": gmsh error: " + e.what());
+  } catch (...) {
+    std::string last;
+    gmsh::logger::getLastError(last);
+    throw Error("writing " + path + ": gmsh error: " + (last.empty() ? std::string("unknown") : last));
+  }
+}
+
+}  // namespace aster::mesh
