@@ -3,6 +3,8 @@
 #include <cmath>
 #include <type_traits>
 
+#include <Eigen/LU>
+
 #include "core/error.hpp"
 #include "expr/dual.hpp"
 

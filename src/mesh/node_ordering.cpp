@@ -42,6 +42,7 @@ NodeSets asterSets(CellType t) {
   const NodeSets hexaEdges{{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},
                            {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
   switch (t) {
+    case CellType::SEG3: return withVertices(2, {{0, 1}});
     case CellType::TRIA6: return withVertices(3, triEdges);
     case CellType::TRIA7: return withVertices(3, concat(triEdges, allVertices(3)));
     case CellType::QUAD8: return withVertices(4, quadEdges);

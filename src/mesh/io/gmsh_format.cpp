@@ -224,7 +224,9 @@ std::string buildModel(const Mesh& mesh) {
     const int dim = topologicalDimension(mesh.cellType(c));
     auto it = entityOf.find({dim, key});
     if (it == entityOf.end()) {
-      const int tag = gmsh::model::addDiscreteEntity(dim);
+      // Tags unique across dimensions: gmsh's MSH 2.2 writer duplicates elements otherwise.
+      const int tag = static_cast<int>(entityOrder.size()) + 1;
+      gmsh::model::addDiscreteEntity(dim, tag);
       it = entityOf.emplace(std::make_pair(dim, key), tag).first;
       entityOrder.emplace_back(dim, tag);
     }

@@ -1,0 +1,188 @@
+#include "solver/cholmod_solver.hpp"
+
+#include <cholmod.h>
+
+#include <sstream>
+#include <vector>
+
+#include "solver/pivot_audit.hpp"
+#include "solver/stopwatch.hpp"
+
+namespace aster::solver {
+
+struct CholmodSolver::Handles {
+  cholmod_common common;
+  cholmod_factor* factor = nullptr;
+  Handles() {
+    cholmod_start(&common);
+    common.print = 0;  // kernels do not print: failures are read from common.status
+  }
+  ~Handles() {
+    if (factor) cholmod_free_factor(&factor, &common);
+    cholmod_finish(&common);
+  }
+};
+
+namespace {
+
+// A view of A for CHOLMOD, without copying: symmetric, upper triangle read (stype = 1).
+cholmod_sparse upperView(const SparseMatrix& A) {
+  cholmod_sparse s{};
+  s.nrow = s.ncol = static_cast<size_t>(A.rows());
+  s.nzmax = static_cast<size_t>(A.nonZeros());
+  s.p = const_cast<int*>(A.outerIndexPtr());
+  s.i = const_cast<int*>(A.innerIndexPtr());
+  s.x = const_cast<double*>(A.valuePtr());
+  s.stype = 1;
+  s.itype = CHOLMOD_INT;
+  s.xtype = CHOLMOD_REAL;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.sorted = 0;
+  s.packed = 1;
+  return s;
+}
+
+std::string cholmodStatus(int status) {
+  switch (status) {
+    case CHOLMOD_OUT_OF_MEMORY: return "out of memory";
+    case CHOLMOD_TOO_LARGE: return "integer overflow: the matrix is too large";
+    case CHOLMOD_INVALID: return "invalid input";
+    case CHOLMOD_NOT_INSTALLED: return "method not installed";
+    case CHOLMOD_GPU_PROBLEM: return "GPU problem";
+    default: return "status " + std::to_string(status);
+  }
+}
+
+// Rows whose diagonal is absent or zero: Lagrange multipliers in a constrained system.
+std::vector<int> constraintSets(const SparseMatrix& A, int& count) {
+  std::vector<int> set(static_cast<size_t>(A.cols()), 0);
+  count = 0;
+  for (int j = 0; j < A.cols(); ++j)
+    if (entryOf(A, j, j) == 0.0) {
+      set[j] = 1;
+      ++count;
+    }
+  return set;
+}
+
+}  // namespace
+
+CholmodSolver::CholmodSolver(Mode mode) : mode_(mode), h_(std::make_unique<Handles>()) {
+  if (mode_ == Mode::Cholesky) {
+    h_->common.supernodal = CHOLMOD_SUPERNODAL;
+    h_->common.final_ll = 1;
+  } else {
+    h_->common.supernodal = CHOLMOD_SIMPLICIAL;
+    h_->common.final_ll = 0;
+  }
+}
+
+CholmodSolver::~CholmodSolver() = default;
+
+void CholmodSolver::analyze(const SparseMatrix& A) {
+  ScopedSeconds t(stats_.analyzeSeconds, stats_.analyzeCount);
+  requireSquare(A, name());
+  SparseMatrix storage;
+  const SparseMatrix& M = compressedMatrix(A, storage);
+  factorized_ = false;
+  if (h_->factor) cholmod_free_factor(&h_->factor, &h_->common);
+  pattern_.record(M);
+  cholmod_sparse view = upperView(M);
+  cholmod_common& c = h_->common;
+  int constrained = 0;
+  const std::vector<int> sets = mode_ == Mode::LDLT ? constraintSets(M, constrained) : std::vector<int>();
+  if (constrained > 0) {
+    // Multipliers after every other unknown: constrained AMD, then analysis of that order.
+    std::vector<int> sets_copy = sets;
+    std::vector<int> perm(sets.size());
+    if (!cholmod_camd(&view, nullptr, 0, sets_copy.data(), perm.data(), &c))
+      throw Error("CHOLMOD_LDLT: constrained ordering failed: " + cholmodStatus(c.status));
+    const int savedMethods = c.nmethods;
+    const int savedOrdering = c.method[0].ordering;
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_GIVEN;
+    h_->factor = cholmod_analyze_p(&view, perm.data(), nullptr, 0, &c);
+    c.nmethods = savedMethods;
+    c.method[0].ordering = savedOrdering;
+  } else {
+    h_->factor = cholmod_analyze(&view, &c);
+  }
+  if (!h_->factor) throw Error(name() + ": symbolic analysis failed: " + cholmodStatus(c.status));
+}
+
+void CholmodSolver::factorize(const SparseMatrix& A) {
+  ScopedSeconds t(stats_.factorizeSeconds, stats_.factorizeCount);
+  SparseMatrix storage;
+  const SparseMatrix& M = compressedMatrix(A, storage);
+  pattern_.requireSame(M, name());
+  factorized_ = false;
+  requireSymmetric(M, symmetryTolerance_, name());
+  cholmod_sparse view = upperView(M);
+  cholmod_common& c = h_->common;
+  cholmod_factor* L = h_->factor;
+  const int ok = cholmod_factorize(&view, L, &c);
+  if (!ok || c.status < CHOLMOD_OK) throw Error(name() + ": numeric factorization failed: " + cholmodStatus(c.status));
+  if (L->minor < L->n) {
+    const int* perm = static_cast<const int*>(L->Perm);
+    const int col = perm ? perm[L->minor] : static_cast<int>(L->minor);
+    if (mode_ == Mode::Cholesky) {
+      std::ostringstream s;
+      s << "CHOLMOD: the matrix is not positive definite: the Cholesky factorization failed at column " << col
+        << " (singular or indefinite matrix; for stiffness + Lagrange multipliers use CHOLMOD_LDLT or UMFPACK)";
+      throw SingularMatrixError(s.str() + "; if it should be positive definite, the structure may be free to move "
+                                          "(missing Dirichlet conditions?)",
+                                col, col);
+    }
+    throwZeroPivot(name(), col, col);
+  }
+  stats_.factorFlops = c.fl;
+  stats_.factorNonzeros = static_cast<long long>(c.lnz);
+  auditFactor(M);
+  factorized_ = true;
+}
+
+// Pivots are D(k,k) for LDL^T and L(k,k)^2 for LL^T, at row and column Perm[k] of A.
+void CholmodSolver::auditFactor(const SparseMatrix& A) const {
+  const cholmod_factor* L = h_->factor;
+  const int* perm = static_cast<const int*>(L->Perm);
+  const double* x = static_cast<const double*>(L->x);
+  std::vector<double> diagonal(L->n);
+  if (L->is_super) {
+    const int* super = static_cast<const int*>(L->super);
+    const int* pi = static_cast<const int*>(L->pi);
+    const int* px = static_cast<const int*>(L->px);
+    for (size_t s = 0; s < L->nsuper; ++s) {
+      const int nrows = pi[s + 1] - pi[s];
+      for (int k = super[s]; k < super[s + 1]; ++k) {
+        const int local = k - super[s];
+        diagonal[k] = x[px[s] + local + static_cast<size_t>(local) * nrows];
+      }
+    }
+  } else {
+    const int* p = static_cast<const int*>(L->p);
+    for (size_t k = 0; k < L->n; ++k) diagonal[k] = x[p[k]];  // the diagonal comes first in each column
+  }
+  const bool ll = L->is_ll;
+  auditPivots(name(), static_cast<int>(L->n), nprec_, [&](int k) {
+    const int i = perm ? perm[k] : k;
+    const double d = ll ? diagonal[k] * diagonal[k] : diagonal[k];
+    return Pivot{d, entryOf(A, i, i), i, i};
+  });
+}
+
+void CholmodSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  ScopedSeconds t(stats_.solveSeconds, stats_.solveCount);
+  requireReadyToSolve(factorized_, b);
+  cholmod_dense rhs{};
+  rhs.nrow = rhs.d = rhs.nzmax = static_cast<size_t>(b.size());
+  rhs.ncol = 1;
+  rhs.x = const_cast<double*>(b.data());
+  rhs.xtype = CHOLMOD_REAL;
+  rhs.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense* solution = cholmod_solve(CHOLMOD_A, h_->factor, &rhs, &h_->common);
+  if (!solution) throw Error(name() + ": solve failed: " + cholmodStatus(h_->common.status));
+  x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solution->x), b.size());
+  cholmod_free_dense(&solution, &h_->common);
+}
+
+}  // namespace aster::solver

@@ -1,0 +1,42 @@
+// CHOLMOD for symmetric matrices (only the upper triangle is read, after a symmetry check).
+// Mode::Cholesky: supernodal LL^T (BLAS/LAPACK on dense blocks), ordering chosen by CHOLMOD
+//   (AMD, or METIS when it predicts less fill); the matrix must be positive definite.
+// Mode::LDLT: simplicial LDL^T without pivoting. Rows whose diagonal is absent or zero when
+//   analyze() runs (Lagrange multipliers) are ordered after all others (constrained AMD), so
+//   that a stiffness + constraints system [K B^T; B 0] with K positive definite and B of full
+//   rank factors stably (it is quasi-definite in that order). Other indefinite matrices may
+//   meet a zero pivot, which is reported; use UMFPACK for general symmetric indefinite systems.
+#pragma once
+#include <memory>
+
+#include "solver/linear_solver.hpp"
+
+namespace aster::solver {
+
+class CholmodSolver : public LinearSolver {
+ public:
+  enum class Mode { Cholesky, LDLT };
+  explicit CholmodSolver(Mode mode);
+  ~CholmodSolver() override;
+  CholmodSolver(const CholmodSolver&) = delete;
+  CholmodSolver& operator=(const CholmodSolver&) = delete;
+
+  void analyze(const SparseMatrix& A) override;
+  void factorize(const SparseMatrix& A) override;
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
+  std::string name() const override { return mode_ == Mode::Cholesky ? "CHOLMOD" : "CHOLMOD_LDLT"; }
+  Mode mode() const { return mode_; }
+
+  // Relative tolerance of the symmetry check, per pair A(i,j), A(j,i). Default 1e-10.
+  void setSymmetryTolerance(double relTol) { symmetryTolerance_ = relTol; }
+
+ private:
+  struct Handles;  // cholmod.h's structures, kept out of this header
+  void auditFactor(const SparseMatrix& A) const;
+  Mode mode_;
+  double symmetryTolerance_ = 1e-10;
+  bool factorized_ = false;
+  std::unique_ptr<Handles> h_;
+};
+
+}  // namespace aster::solver

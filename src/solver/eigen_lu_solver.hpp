@@ -1,0 +1,25 @@
+// Eigen's SparseLU (supernodal LU with partial pivoting, COLAMD ordering): no external library.
+#pragma once
+#include <memory>
+
+#include "solver/linear_solver.hpp"
+
+namespace aster::solver {
+
+class EigenLuSolver : public LinearSolver {
+ public:
+  EigenLuSolver();
+  ~EigenLuSolver() override;
+
+  void analyze(const SparseMatrix& A) override;
+  void factorize(const SparseMatrix& A) override;
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
+  std::string name() const override { return "EIGEN_LU"; }
+
+ private:
+  class Factor;  // SparseLU with access to its pivots
+  std::unique_ptr<Factor> lu_;
+  bool factorized_ = false;
+};
+
+}  // namespace aster::solver

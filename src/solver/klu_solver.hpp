@@ -1,0 +1,29 @@
+// KLU: LU with block triangular form, suited to circuit-like very sparse matrices.
+#pragma once
+#include <memory>
+
+#include "solver/linear_solver.hpp"
+
+namespace aster::solver {
+
+class KluSolver : public LinearSolver {
+ public:
+  KluSolver();
+  ~KluSolver() override;
+  KluSolver(const KluSolver&) = delete;
+  KluSolver& operator=(const KluSolver&) = delete;
+
+  void analyze(const SparseMatrix& A) override;
+  void factorize(const SparseMatrix& A) override;
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
+  std::string name() const override { return "KLU"; }
+
+ private:
+  struct Handles;  // klu.h's structures, kept out of this header
+  void freeNumeric();
+  void freeSymbolic();
+  void auditFactor(const SparseMatrix& A) const;
+  std::unique_ptr<Handles> h_;
+};
+
+}  // namespace aster::solver

@@ -1,0 +1,77 @@
+// Sparse direct solvers chosen by name, as code_aster's SOLVEUR/METHODE.
+// analyze() once per sparsity pattern, factorize() at each Newton iteration
+// (same pattern, new values), solve() for each right-hand side.
+#pragma once
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "solver/sparsity_pattern.hpp"
+
+namespace aster::solver {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// A singular or numerically singular matrix. column/row are the original (0-based)
+// indices of the failing pivot when the library tells them, -1 otherwise, so that
+// a caller can map them to a node and a component.
+class SingularMatrixError : public Error {
+ public:
+  SingularMatrixError(const std::string& what, int column, int row)
+      : Error(what), column_(column), row_(row) {}
+  int column() const { return column_; }
+  int row() const { return row_; }
+
+ private:
+  int column_;
+  int row_;
+};
+
+struct LinearSolverStatistics {
+  double analyzeSeconds = 0.0;    // totals over all calls
+  double factorizeSeconds = 0.0;
+  double solveSeconds = 0.0;
+  int analyzeCount = 0;
+  int factorizeCount = 0;
+  int solveCount = 0;
+  long long factorNonzeros = -1;  // entries stored in the factors after the last factorize; -1: unknown
+  double factorFlops = -1.0;      // flops of the last factorization as the library reports them; -1: not reported
+};
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver();
+  virtual void analyze(const SparseMatrix& A) = 0;    // symbolic, once per sparsity pattern
+  virtual void factorize(const SparseMatrix& A) = 0;  // numeric, same pattern as analyze()
+  virtual void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const = 0;
+  virtual std::string name() const = 0;
+
+  const LinearSolverStatistics& statistics() const { return stats_; }
+
+  // code_aster's NPREC: a pivot that lost more than nprec significant digits with
+  // respect to the matrix entry it started from makes the matrix numerically
+  // singular. nprec <= 0 keeps only the exact-zero pivot test. Default 8.
+  void setSingularityDigits(int nprec) { nprec_ = nprec; }
+  int singularityDigits() const { return nprec_; }
+
+ protected:
+  // Throws unless a factorization is ready and b has as many entries as the matrix has rows.
+  void requireReadyToSolve(bool factorized, const Eigen::VectorXd& b) const;
+
+  mutable LinearSolverStatistics stats_;  // solve() is const but counts its time
+  int nprec_ = 8;
+  SparsityPattern pattern_;  // what analyze() saw, to refuse another pattern in factorize()
+};
+
+// The names makeLinearSolver accepts.
+std::vector<std::string> linearSolverMethods();
+
+// 'UMFPACK' (default of code_aster's METHODE here), 'CHOLMOD' (supernodal LL^T, symmetric
+// positive definite only), 'CHOLMOD_LDLT' (simplicial LDL^T without pivoting, for symmetric
+// quasi-definite systems such as stiffness + Lagrange multipliers), 'KLU', 'EIGEN_LU'.
+// Throws aster::Error on an unknown name, listing the allowed ones.
+std::unique_ptr<LinearSolver> makeLinearSolver(const std::string& methode);
+
+}  // namespace aster::solver

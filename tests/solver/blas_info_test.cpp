@@ -1,0 +1,23 @@
+#include "solver/blas_info.hpp"
+
+#include <gtest/gtest.h>
+
+#include "solver/linear_solver.hpp"
+
+namespace aster::solver {
+namespace {
+
+TEST(BlasInfo, ReportsTheLibraryCholmodLoaded) {
+  // Linking CHOLMOD loads libblas.so.3, whichever implementation the system selected.
+  auto solver = makeLinearSolver("CHOLMOD");
+  const BlasInfo info = blasInUse();
+  EXPECT_FALSE(info.library.empty());
+  EXPECT_NE(info.library.find("blas"), std::string::npos) << info.library;
+  RecordProperty("blas", info.library);
+  if (info.library.find("openblas") != std::string::npos) {
+    EXPECT_FALSE(info.openblasConfig.empty());
+  }
+}
+
+}  // namespace
+}  // namespace aster::solver
