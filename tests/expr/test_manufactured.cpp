@@ -219,3 +219,23 @@ TEST(Manufactured, Errors) {
                                 PlaneHypothesis::PlaneStrain, Kinematics::GreenLagrange);
   EXPECT_NE(message([&] { folded.contact(0.5, 0.0, {0.0, -1.0}); }).find("det F = -1 <= 0"), std::string::npos);
 }
+
+TEST(Manufactured, CompilesTheLongSympyFormulasOfTheReferenceStudy) {
+  // The reference study pastes sympy's Python strings into FORMULE: they must compile
+  // and agree with the dual-number loads (coefficients are rounded to 17 digits).
+  auto m = ssnp150(0.3);
+  auto fx = Expression::compile(svk_nu03_formula_fx, {"X", "Y"});
+  auto fy = Expression::compile(svk_nu03_formula_fy, {"X", "Y"});
+  auto p = Expression::compile(svk_nu03_formula_p, {"X", "Y"});
+  const double scaleF = scaleOf(svk_nu03_body, 2), scaleP = scaleOf(svk_nu03_contact, 3);
+  for (int i = 0; i <= 20; ++i) {
+    for (int j = 0; j <= 20; ++j) {
+      const double x = i / 20.0, y = j / 20.0;
+      const Eigen::Vector2d f = m->bodyForce(x, y);
+      EXPECT_NEAR((*fx)({x, y}), f.x(), kRel * scaleF);
+      EXPECT_NEAR(fy->evaluateChecked(std::vector<double>{x, y}.data()), f.y(), kRel * scaleF);
+    }
+    const double x = i / 20.0;
+    EXPECT_NEAR((*p)({x, 0.0}), m->contact(x, 0.0, {0.0, -1.0}).pressure, kRel * scaleP);
+  }
+}

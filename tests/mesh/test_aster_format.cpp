@@ -129,3 +129,12 @@ TEST(AsterFormat, MalformedInputsNameFileLineAndWhat) {
   EXPECT_TRUE(has(m, "bad.mail:6:") && has(m, "cell 'XX' of group 'G'")) << m;
   EXPECT_THROW(readAsterMesh("/nonexistent/file.mail"), aster::Error);
 }
+
+TEST(AsterFormat, SummaryCountsTypesAndGroups) {
+  const std::string s = readAsterMesh(kSsnp150b).summary();
+  EXPECT_NE(s.find("number of nodes:  11"), std::string::npos) << s;
+  EXPECT_NE(s.find("SEG3: 5"), std::string::npos) << s;
+  EXPECT_NE(s.find("QUAD8: 1"), std::string::npos) << s;
+  EXPECT_NE(s.find("number of groups of cells: 6"), std::string::npos) << s;
+  EXPECT_NE(s.find("MAITRE: 1"), std::string::npos) << s;
+}

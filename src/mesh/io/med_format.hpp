@@ -1,0 +1,26 @@
+// MED files (libmedc 4.1): unstructured meshes with families turned into groups
+// (cell families -> GROUP_MA, node families -> GROUP_NO) and nodal result fields.
+// Connectivities are converted with code_aster's MED <-> code_aster node tables.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "mesh/nodal_field.hpp"
+
+namespace aster::mesh {
+
+// Reads the mesh called `meshName` (the first mesh of the file when empty).
+Mesh readMedMesh(const std::string& path, const std::string& meshName = "");
+
+// Writes the mesh (and groups, names when they fit in 16 characters) to a new file.
+void writeMedMesh(const Mesh& mesh, const std::string& path, const std::string& meshName = "MAIL");
+
+// The mesh followed by nodal fields, one MED time step per instant (numdt = index, dt = time).
+void writeMedResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
+                     const std::string& meshName = "MAIL");
+
+// One nodal field at one time step (numdt) as written above: components and values.
+NodalField readMedNodalField(const std::string& path, const std::string& fieldName, int numdt);
+
+}  // namespace aster::mesh

@@ -1,0 +1,106 @@
+#include "mesh/io/vtk_format.hpp"
+
+#include <fstream>
+#include <iomanip>
+
+#include "core/error.hpp"
+#include "mesh/node_ordering.hpp"
+
+namespace aster::mesh {
+
+namespace {
+
+int vtkType(CellType t) {
+  switch (t) {
+    case CellType::POI1: return 1;
+    case CellType::SEG2: return 3;
+    case CellType::SEG3: return 21;
+    case CellType::SEG4: return 35;
+    case CellType::TRIA3: return 5;
+    case CellType::TRIA6: return 22;
+    case CellType::TRIA7: return 34;
+    case CellType::QUAD4: return 9;
+    case CellType::QUAD8: return 23;
+    case CellType::QUAD9: return 28;
+    case CellType::TETRA4: return 10;
+    case CellType::TETRA10: return 24;
+    case CellType::PENTA6: return 13;
+    case CellType::PENTA15: return 26;
+    case CellType::PENTA18: return 32;
+    case CellType::PYRAM5: return 14;
+    case CellType::PYRAM13: return 27;
+    case CellType::HEXA8: return 12;
+    case CellType::HEXA20: return 25;
+    case CellType::HEXA27: return 29;
+  }
+  return 0;
+}
+
+std::string baseName(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+}  // namespace
+
+void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<NodalField>& fields) {
+  for (const auto& f : fields)
+    if (f.components.empty() || f.values.size() != f.components.size() * static_cast<std::size_t>(mesh.nodeCount()))
+      throw Error("VTK writer: field '" + f.name + "' has " + std::to_string(f.values.size()) + " values, expected " +
+                  std::to_string(mesh.nodeCount()) + " nodes x " + std::to_string(f.components.size()) + " components");
+  std::ofstream out(path);
+  if (!out) throw Error("cannot write the VTK file '" + path + "'");
+  out << std::setprecision(16);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+      << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << mesh.nodeCount() << "\" NumberOfCells=\"" << mesh.cellCount()
+      << "\">\n<PointData>\n";
+  for (const auto& f : fields) {
+    const int nc = static_cast<int>(f.components.size());
+    const int width = nc == 2 ? 3 : nc;
+    out << "<DataArray type=\"Float64\" Name=\"" << f.name << "\" NumberOfComponents=\"" << width << "\"";
+    for (int k = 0; k < nc; ++k) out << " ComponentName" << k << "=\"" << f.components[k] << "\"";
+    out << " format=\"ascii\">\n";
+    for (int i = 0; i < mesh.nodeCount(); ++i) {
+      for (int k = 0; k < nc; ++k) out << f.values[static_cast<std::size_t>(i) * nc + k] << " ";
+      if (nc == 2) out << "0 ";
+      out << "\n";
+    }
+    out << "</DataArray>\n";
+  }
+  out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (int i = 0; i < mesh.nodeCount(); ++i) {
+    const auto x = mesh.node(i);
+    out << x[0] << " " << x[1] << " " << x[2] << "\n";
+  }
+  out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (int c = 0; c < mesh.cellCount(); ++c) {
+    const auto n = mesh.cellNodes(c);
+    for (int k : fromAsterOrder(NodeConvention::Vtk, mesh.cellType(c), std::vector<int>(n.begin(), n.end())))
+      out << k << " ";
+    out << "\n";
+  }
+  out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  long offset = 0;
+  for (int c = 0; c < mesh.cellCount(); ++c) out << (offset += mesh.cellNodes(c).size()) << "\n";
+  out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for (int c = 0; c < mesh.cellCount(); ++c) out << vtkType(mesh.cellType(c)) << "\n";
+  out << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  if (!out) throw Error("error while writing the VTK file '" + path + "'");
+}
+
+void writePvd(const Mesh& mesh, const std::string& pvdPath, const std::vector<FieldInstant>& instants) {
+  std::string stem = pvdPath;
+  if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".pvd") stem.resize(stem.size() - 4);
+  std::ofstream out(pvdPath);
+  if (!out) throw Error("cannot write the VTK collection '" + pvdPath + "'");
+  out << std::setprecision(16);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (std::size_t k = 0; k < instants.size(); ++k) {
+    const std::string vtu = stem + "_" + std::to_string(k) + ".vtu";
+    writeVtu(mesh, vtu, instants[k].fields);
+    out << "<DataSet timestep=\"" << instants[k].time << "\" part=\"0\" file=\"" << baseName(vtu) << "\"/>\n";
+  }
+  out << "</Collection>\n</VTKFile>\n";
+}
+
+}  // namespace aster::mesh
