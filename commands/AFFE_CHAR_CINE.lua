@@ -1,0 +1,13 @@
+return OPER{ nom = 'AFFE_CHAR_CINE', sd_prod = 'char_cine_meca', reentrant = 'n',
+  fr = "Imposes displacements by elimination of the unknowns (kinematic load, no Lagrange multipliers).",
+  SIMP{ 'MODELE', statut = 'o', typ = 'modele_sdaster', fr = "The model." },
+  FACT{ 'MECA_IMPO', statut = 'o', max = '**', fr = "Imposed displacement values.",
+    regles = { UN_PARMI('TOUT', 'GROUP_MA', 'GROUP_NO'), AU_MOINS_UN('DX', 'DY') },
+    SIMP{ 'TOUT', typ = 'TXM', into = {'OUI'}, fr = "Every node of the model." },
+    SIMP{ 'GROUP_MA', typ = 'grma', max = '**', fr = "Nodes of the cells of these groups." },
+    SIMP{ 'GROUP_NO', typ = 'grno', max = '**', fr = "Nodes of these groups." },
+    SIMP{ 'DX', typ = 'R', fr = "Imposed displacement along X." },
+    SIMP{ 'DY', typ = 'R', fr = "Imposed displacement along Y." },
+  },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+}

@@ -1,0 +1,11 @@
+return OPER{ nom = 'DEFI_MATERIAU', sd_prod = 'mater_sdaster', reentrant = 'f',
+  fr = "Defines a material: its behaviours and their parameters.",
+  regles = { AU_MOINS_UN('ELAS') },
+  FACT{ 'ELAS', fr = "Isotropic linear elasticity (also the elastic part of large-strain models).",
+    SIMP{ 'E', statut = 'o', typ = 'R', val_min = 0.0, fr = "Young's modulus." },
+    SIMP{ 'NU', statut = 'o', typ = 'R', val_min = -1.0, val_max = 0.5, fr = "Poisson's ratio." },
+    SIMP{ 'RHO', typ = 'R', val_min = 0.0, fr = "Density." },
+    SIMP{ 'ALPHA', typ = 'R', fr = "Thermal expansion coefficient." },
+  },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+}
