@@ -356,6 +356,13 @@ int conceptIndexImpl(lua_State* L) {
     return 1;
   }
   const std::string name = key ? key : "?";
+  if (const FieldGetter* getter = Operators::instance().findFieldGetter(type)) {
+    Datum d = (*getter)(*self->ptr, name);
+    if (d.kind != Datum::Kind::Nil) {
+      pushDatum(L, d);
+      return 1;
+    }
+  }
   auto methods = Operators::instance().methodNames(type);
   methods.erase(std::remove(methods.begin(), methods.end(), std::string("__call")), methods.end());
   pushFatal(L, fatalText(conceptLabel(L, *self->ptr), callSite(L),

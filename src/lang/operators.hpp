@@ -40,6 +40,8 @@ struct Datum {
 // concept given with reuse=, or nullptr.
 using Operator = std::function<ConceptPtr(const Keywords& keywords, Session& session, ConceptPtr reuse)>;
 using Method = std::function<Datum(Concept& self, const std::vector<Value>& args, Session& session)>;
+// Fields read with a dot (mms.FORCE_INTERNE): Nil when the concept has no such field.
+using FieldGetter = std::function<Datum(Concept& self, const std::string& field)>;
 
 class Operators {
  public:
@@ -49,10 +51,16 @@ class Operators {
   void addMethod(const std::string& conceptType, const std::string& method, Method m);
   const Method* findMethod(const std::string& conceptType, const std::string& method) const;
   std::vector<std::string> methodNames(const std::string& conceptType) const;
+  void setFieldGetter(const std::string& conceptType, FieldGetter g) { fields_[conceptType] = std::move(g); }
+  const FieldGetter* findFieldGetter(const std::string& conceptType) const {
+    auto it = fields_.find(conceptType);
+    return it == fields_.end() ? nullptr : &it->second;
+  }
 
  private:
   std::map<std::string, Operator> operators_;
   std::map<std::string, std::map<std::string, Method>> methods_;
+  std::map<std::string, FieldGetter> fields_;
 };
 
 // Registers at start-up: `static RegisterOperator reg("LIRE_MAILLAGE", lireMaillage);`

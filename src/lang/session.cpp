@@ -1,8 +1,12 @@
 #include "lang/session.hpp"
 
+#include <fstream>
 #include <system_error>
 
+#include "core/messages.hpp"
+
 #include "core/error.hpp"
+#include <cstdio>
 
 namespace aster::lang {
 
@@ -24,6 +28,21 @@ std::filesystem::path Session::outputFile(const std::string& name) const {
   std::filesystem::create_directories(outputDir, ec);
   if (ec) throw Error("cannot create the output folder " + outputDir.string() + ": " + ec.message());
   return outputDir / name;
+}
+
+std::filesystem::path Session::resuPath() const {
+  return outputDir / (studyPath.stem().string() + ".resu");
+}
+
+void Session::recordCheck(const std::string& block, bool ok) {
+  (ok ? checksOk : checksNook) += 1;
+  // Checks are always shown, even with --quiet: they are the study's verdict.
+  std::fputs(block.c_str(), stdout);
+  std::fflush(stdout);
+  const auto path = outputFile(resuPath().filename().string());
+  std::ofstream out(path, checksOk + checksNook == 1 ? std::ios::trunc : std::ios::app);
+  out << block;
+  if (!out) throw Error("cannot write " + path.string());
 }
 
 }  // namespace aster::lang

@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "core/concept.hpp"
 
@@ -19,9 +20,12 @@ struct Session {
   std::string where;
   std::string command;
 
-  // TEST_RESU and friends.
+  // TEST_RESU and friends: counts, and the lines of <output-dir>/<study>.resu.
   int checksOk = 0;
   int checksNook = 0;
+  // Prints a check block, appends it to the .resu file, counts it.
+  void recordCheck(const std::string& block, bool ok);
+  std::filesystem::path resuPath() const;
 
   // The study's name for a concept ("MAIL"), or a generated one: set by the interpreter.
   std::function<std::string(const Concept&)> nameOf = [](const Concept& c) {

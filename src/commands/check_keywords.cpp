@@ -1,0 +1,34 @@
+#include "commands/check_keywords.hpp"
+
+#include "core/error.hpp"
+
+namespace aster::lang {
+
+post::CheckSpec checkSpecOf(const Keywords& k) {
+  post::CheckSpec s;
+  s.hasValeCalc = k.has("VALE_CALC");
+  if (s.hasValeCalc) s.valeCalc = k.real("VALE_CALC");
+  s.toleMachine = k.real("TOLE_MACHINE", s.toleMachine);
+  s.reference = k.text("REFERENCE", "NON_REGRESSION");
+  s.hasValeRefe = k.has("VALE_REFE");
+  if (s.hasValeRefe) s.valeRefe = k.real("VALE_REFE");
+  s.precision = k.real("PRECISION", s.precision);
+  s.relative = k.text("CRITERE", "RELATIF") == "RELATIF";
+  s.ordreGrandeur = k.real("ORDRE_GRANDEUR", 0.0);
+  s.legende = k.text("LEGENDE", "XXXX");
+  if (s.reference != "NON_REGRESSION" && !s.hasValeRefe)
+    throw Error((k.path.empty() ? "" : k.path + ": ") + "REFERENCE='" + s.reference + "' needs VALE_REFE");
+  if (!s.hasValeCalc && !s.hasValeRefe)
+    throw Error((k.path.empty() ? "" : k.path + ": ") + "give VALE_CALC (and VALE_REFE with a REFERENCE)");
+  return s;
+}
+
+void recordCheck(Session& session, double computed, const post::CheckSpec& spec,
+                 const std::vector<std::pair<std::string, std::string>>& what) {
+  const auto lines = post::check(computed, spec);
+  bool ok = true;
+  for (const auto& l : lines) ok = ok && l.ok;
+  session.recordCheck(post::formatCheck(what, lines, spec.legende), ok);
+}
+
+}  // namespace aster::lang

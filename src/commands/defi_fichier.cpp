@@ -1,0 +1,21 @@
+// DEFI_FICHIER: binds a file to a logical unit (UNITE) for later commands.
+#include "core/error.hpp"
+#include "lang/operators.hpp"
+
+namespace aster::lang {
+namespace {
+
+ConceptPtr defiFichier(const Keywords& k, Session& session, ConceptPtr) {
+  const int unit = static_cast<int>(k.integer("UNITE"));
+  if (k.text("ACTION") == "LIBERER") {
+    session.units.erase(unit);
+    return nullptr;
+  }
+  session.units[unit] = session.studyRelative(k.text("FICHIER"));
+  return nullptr;
+}
+
+RegisterOperator reg("DEFI_FICHIER", defiFichier);
+
+}  // namespace
+}  // namespace aster::lang

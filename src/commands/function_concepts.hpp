@@ -1,0 +1,32 @@
+// Concepts of the function family: formulas (formule), tabulated functions
+// (fonction_sdaster) and lists of reals (listr8_sdaster).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/concept.hpp"
+#include "expr/function.hpp"
+
+namespace aster::lang {
+
+class FunctionConcept : public Concept {
+ public:
+  FunctionConcept(std::string type, expr::FunctionPtr f) : type_(std::move(type)), function(std::move(f)) {}
+  std::string typeName() const override { return type_; }
+  expr::FunctionPtr function;
+
+ private:
+  std::string type_;
+};
+
+class RealListConcept : public Concept {
+ public:
+  explicit RealListConcept(std::vector<double> v) : values(std::move(v)) {}
+  std::string typeName() const override { return "listr8_sdaster"; }
+  std::vector<double> values;
+};
+
+// The function behind a keyword that takes a formule or a fonction_sdaster.
+expr::FunctionPtr functionOf(const ConceptPtr& c);
+
+}  // namespace aster::lang

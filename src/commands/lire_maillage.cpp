@@ -1,0 +1,47 @@
+// LIRE_MAILLAGE: reads a mesh from the file bound to UNITE (default unit 20:
+// the study's name with the format's extension).
+#include <filesystem>
+
+#include "commands/mesh_concept.hpp"
+#include "core/error.hpp"
+#include "core/messages.hpp"
+#include "lang/operators.hpp"
+#include "mesh/io/aster_format.hpp"
+#include "mesh/io/gmsh_format.hpp"
+#if __has_include("mesh/io/med_format.hpp")
+#include "mesh/io/med_format.hpp"
+#define ASTER_HAS_MED 1
+#endif
+
+namespace aster::lang {
+namespace {
+
+ConceptPtr lireMaillage(const Keywords& k, Session& session, ConceptPtr) {
+  const std::string format = k.text("FORMAT");
+  const int unit = static_cast<int>(k.integer("UNITE"));
+  const std::string ext = format == "ASTER" ? ".mail" : format == "GMSH" ? ".msh" : ".med";
+  const auto path = session.unitPath(unit, ext);
+  if (!std::filesystem::exists(path))
+    throw Error("UNITE=" + std::to_string(unit) + ": the file " + path.string() +
+                " does not exist (bind a file with DEFI_FICHIER{ACTION='ASSOCIER', UNITE=" + std::to_string(unit) +
+                ", FICHIER='...'} or aster-lite -u " + std::to_string(unit) + "=PATH)");
+  auto m = std::make_shared<mesh::Mesh>();
+  if (format == "ASTER") {
+    *m = mesh::readAsterMesh(path.string());
+  } else if (format == "GMSH") {
+    *m = mesh::readGmshMesh(path.string());
+  } else {
+#ifdef ASTER_HAS_MED
+    *m = mesh::readMedMesh(path.string(), k.text("NOM_MED", ""));
+#else
+    throw Error("FORMAT='MED': this build of aster-lite has no MED library (install libmedc-dev and rebuild)");
+#endif
+  }
+  if (k.integer("INFO") >= 1) Messages::info(m->summary());
+  return std::make_shared<MeshConcept>(m);
+}
+
+RegisterOperator reg("LIRE_MAILLAGE", lireMaillage);
+
+}  // namespace
+}  // namespace aster::lang

@@ -1,0 +1,49 @@
+// Mechanical loads as AFFE_CHAR_MECA(_F) and AFFE_CHAR_CINE define them, in
+// plain data for the solver: node and cell lists of the mesh, component
+// numbers (0 DX, 1 DY), values as SpaceFunction of (X, Y, Z, INST).
+#pragma once
+#include <vector>
+
+#include "model/space_function.hpp"
+
+namespace aster::model {
+
+struct ImposedDisplacement {  // DDL_IMPO, MECA_IMPO
+  std::vector<int> nodes;
+  int component = 0;
+  SpaceFunction value;
+};
+
+struct EdgeForce {  // FORCE_CONTOUR: force per unit reference length (dead load)
+  std::vector<int> cells;
+  SpaceFunction fx, fy;
+};
+
+struct BodyForce {  // FORCE_INTERNE: force per unit reference area
+  std::vector<int> cells;
+  SpaceFunction fx, fy;
+};
+
+struct Pressure {  // PRES_REP: follower pressure on the deformed edge
+  std::vector<int> cells;
+  SpaceFunction p;
+};
+
+struct NodalForce {  // FORCE_NODALE
+  std::vector<int> nodes;
+  SpaceFunction fx, fy;
+};
+
+struct MechanicalLoad {
+  // AFFE_CHAR_CINE: conditions eliminated from the system. DDL_IMPO of
+  // AFFE_CHAR_MECA are eliminated as well in aster-lite (reactions are the
+  // residual at those DOFs, so they are available either way).
+  bool kinematic = false;
+  std::vector<ImposedDisplacement> imposed;
+  std::vector<EdgeForce> edgeForces;
+  std::vector<BodyForce> bodyForces;
+  std::vector<Pressure> pressures;
+  std::vector<NodalForce> nodalForces;
+};
+
+}  // namespace aster::model

@@ -1,0 +1,54 @@
+#include "model/model.hpp"
+
+#include "core/error.hpp"
+
+namespace aster::model {
+
+Modelisation modelisationFromName(const std::string& word) {
+  if (word == "D_PLAN") return Modelisation::PlaneStrain;
+  if (word == "C_PLAN") return Modelisation::PlaneStress;
+  throw Error("MODELISATION='" + word + "' is not available; aster-lite has 'D_PLAN' and 'C_PLAN'");
+}
+
+const char* modelisationName(Modelisation m) { return m == Modelisation::PlaneStrain ? "D_PLAN" : "C_PLAN"; }
+
+Model::Model(std::shared_ptr<mesh::Mesh> mesh)
+    : mesh_(std::move(mesh)),
+      position_(mesh_->cellCount(), -1),
+      byCell_(mesh_->cellCount(), Modelisation::PlaneStrain),
+      nodeUsed_(mesh_->nodeCount(), false) {}
+
+int Model::assign(const std::vector<int>& cells, Modelisation m) {
+  int count = 0;
+  for (int c : cells) {
+    if (mesh::topologicalDimension(mesh_->cellType(c)) != 2) continue;
+    position_[c] = 0;
+    byCell_[c] = m;
+    ++count;
+  }
+  refresh();
+  return count;
+}
+
+void Model::refresh() {
+  cells_.clear();
+  modelisation_.clear();
+  std::fill(nodeUsed_.begin(), nodeUsed_.end(), false);
+  for (int c = 0; c < mesh_->cellCount(); ++c) {
+    if (position_[c] < 0) continue;
+    position_[c] = static_cast<int>(cells_.size());
+    cells_.push_back(c);
+    modelisation_.push_back(byCell_[c]);
+    for (int n : mesh_->cellNodes(c)) nodeUsed_[n] = true;
+  }
+}
+
+void Model::checkCellsOnModel(const std::vector<int>& cells, const std::string& what) const {
+  for (int c : cells)
+    for (int n : mesh_->cellNodes(c))
+      if (!nodeUsed_[n])
+        throw Error(what + ": node " + mesh_->nodeName(n) + " of cell " + mesh_->cellName(c) +
+                    " carries no element of the model (AFFE_MODELE covers it?)");
+}
+
+}  // namespace aster::model

@@ -1,0 +1,29 @@
+#include "model/space_function.hpp"
+
+#include "core/error.hpp"
+
+namespace aster::model {
+
+SpaceFunction::SpaceFunction(expr::FunctionPtr f) : f_(std::move(f)) {
+  const auto& params = f_->parameters();
+  if (params.size() > 4) throw Error("a load function takes at most X, Y, Z and INST, got " +
+                                     expr::joinNames(params));
+  count_ = static_cast<int>(params.size());
+  for (int i = 0; i < count_; ++i) {
+    const std::string& p = params[i];
+    if (p == "X") slot_[i] = 0;
+    else if (p == "Y") slot_[i] = 1;
+    else if (p == "Z") slot_[i] = 2;
+    else if (p == "INST") slot_[i] = 3;
+    else throw Error("a load function may depend on X, Y, Z and INST only; its parameter '" + p +
+                     "' is none of them");
+  }
+}
+
+bool SpaceFunction::dependsOnTime() const {
+  for (int i = 0; i < count_; ++i)
+    if (slot_[i] == 3) return true;
+  return false;
+}
+
+}  // namespace aster::model
