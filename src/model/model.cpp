@@ -14,6 +14,7 @@ const char* modelisationName(Modelisation m) { return m == Modelisation::PlaneSt
 
 Model::Model(std::shared_ptr<mesh::Mesh> mesh)
     : mesh_(std::move(mesh)),
+      assigned_(mesh_->cellCount(), 0),
       position_(mesh_->cellCount(), -1),
       byCell_(mesh_->cellCount(), Modelisation::PlaneStrain),
       nodeUsed_(mesh_->nodeCount(), false) {}
@@ -21,8 +22,9 @@ Model::Model(std::shared_ptr<mesh::Mesh> mesh)
 int Model::assign(const std::vector<int>& cells, Modelisation m) {
   int count = 0;
   for (int c : cells) {
-    if (mesh::topologicalDimension(mesh_->cellType(c)) != 2) continue;
-    position_[c] = 0;
+    const int dim = mesh::topologicalDimension(mesh_->cellType(c));
+    if (dim != 1 && dim != 2) continue;
+    assigned_[c] = 1;
     byCell_[c] = m;
     ++count;
   }
@@ -32,14 +34,20 @@ int Model::assign(const std::vector<int>& cells, Modelisation m) {
 
 void Model::refresh() {
   cells_.clear();
+  segments_.clear();
   modelisation_.clear();
   std::fill(nodeUsed_.begin(), nodeUsed_.end(), false);
   for (int c = 0; c < mesh_->cellCount(); ++c) {
-    if (position_[c] < 0) continue;
+    position_[c] = -1;
+    if (!assigned_[c]) continue;
+    for (int n : mesh_->cellNodes(c)) nodeUsed_[n] = true;
+    if (mesh::topologicalDimension(mesh_->cellType(c)) == 1) {
+      segments_.push_back(c);
+      continue;
+    }
     position_[c] = static_cast<int>(cells_.size());
     cells_.push_back(c);
     modelisation_.push_back(byCell_[c]);
-    for (int n : mesh_->cellNodes(c)) nodeUsed_[n] = true;
   }
 }
 

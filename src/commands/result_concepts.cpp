@@ -1,0 +1,34 @@
+#include "commands/result_concepts.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "post/check.hpp"
+
+namespace aster::lang {
+
+const ResultInstant& ResultConcept::at(double time, double precision) const {
+  for (const auto& i : instants)
+    if (std::fabs(i.time - time) <= precision * std::max(1.0, std::fabs(time))) return i;
+  std::string list;
+  for (const auto& i : instants) list += (list.empty() ? "" : ", ") + post::formatNumber(i.time);
+  throw Error("INST=" + post::formatNumber(time) + " is not an instant of the result (instants: " +
+              (list.empty() ? std::string("none") : list) + ")");
+}
+
+const ResultInstant& ResultConcept::last() const {
+  if (instants.empty()) throw Error("the result holds no converged instant");
+  return instants.back();
+}
+
+const mesh::NodalField& ResultConcept::nodalField(const ResultInstant& i, const std::string& name) {
+  std::string list;
+  for (const auto& f : i.nodal) {
+    if (f.name == name) return f;
+    list += (list.empty() ? "" : ", ") + f.name;
+  }
+  throw Error("NOM_CHAM='" + name + "' is not stored in the result at INST=" + post::formatNumber(i.time) +
+              " (fields: " + list + ")");
+}
+
+}  // namespace aster::lang

@@ -1,0 +1,60 @@
+// Concepts holding computed fields: cham_no_sdaster (one nodal field) and
+// evol_noli (STAT_NON_LINE's result: nodal fields per converged instant).
+// Fields are stored per mesh node (node-major, components in order), the form
+// the MED / GMSH / VTK writers take.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/concept.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/nodal_field.hpp"
+#include "model/model.hpp"
+
+namespace aster::lang {
+
+class NodalFieldConcept : public Concept {
+ public:
+  NodalFieldConcept(std::shared_ptr<mesh::Mesh> m, mesh::NodalField f) : mesh(std::move(m)), field(std::move(f)) {}
+  std::string typeName() const override { return "cham_no_sdaster"; }
+  std::shared_ptr<mesh::Mesh> mesh;
+  mesh::NodalField field;
+  // Nodes where the field is defined (empty: every node of the mesh).
+  std::vector<int> support;
+};
+
+// Gauss point values per cell of the model (SIEF_ELGA): `values` holds, for
+// each cell of `cells` in order, gaussPoints[k] * components.size() numbers.
+struct GaussField {
+  std::string name;
+  std::vector<std::string> components;
+  std::vector<int> cells;
+  std::vector<int> offsets;  // into values, per cell, size cells.size()+1
+  std::vector<double> values;
+};
+
+struct ResultInstant {
+  int index = 0;      // NUME_ORDRE
+  double time = 0.0;  // INST
+  std::vector<mesh::NodalField> nodal;  // DEPL, REAC_NODA, ...
+  std::vector<GaussField> gauss;        // SIEF_ELGA
+  int newtonIterations = 0;
+};
+
+class ResultConcept : public Concept {
+ public:
+  explicit ResultConcept(std::shared_ptr<model::Model> m) : model(std::move(m)) {}
+  std::string typeName() const override { return "evol_noli"; }
+  std::shared_ptr<model::Model> model;
+  std::vector<ResultInstant> instants;
+
+  // The instant closest to `time` within `precision` (relative, as code_aster's
+  // CRITERE='RELATIF'); throws aster::Error listing the instants otherwise.
+  const ResultInstant& at(double time, double precision = 1e-6) const;
+  const ResultInstant& last() const;
+  // A field of an instant by name; throws listing the available ones.
+  static const mesh::NodalField& nodalField(const ResultInstant& i, const std::string& name);
+};
+
+}  // namespace aster::lang
