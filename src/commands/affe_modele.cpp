@@ -21,8 +21,8 @@ ConceptPtr affeModele(const Keywords& k, Session&, ConceptPtr) {
     const int n = m->assign(cells, mod);
     if (n == 0)
       throw Error(occ.path + ": none of the " + std::to_string(cells.size()) +
-                  " cells selected is a 2D cell (TRIA3, TRIA6, QUAD4, QUAD8, QUAD9): no element assigned");
-    info << "  " << n << " 2D cells -> MECANIQUE " << occ.text("MODELISATION") << "\n";
+                  " cells selected is a 2D cell (TRIA3, TRIA6, QUAD4, QUAD8, QUAD9) or a segment: no element assigned");
+    info << "  " << n << " cells -> MECANIQUE " << occ.text("MODELISATION") << "\n";
   }
   Messages::info("AFFE_MODELE:\n" + info.str());
   return std::make_shared<ModelConcept>(m);

@@ -1,0 +1,48 @@
+// What a study may ask results and fields (code_aster's method names):
+// resu:getField('DEPL', inst), resu:getAccessParameters(), field:getValues(),
+// field:getComponents().
+#include "commands/result_concepts.hpp"
+#include "core/error.hpp"
+#include "lang/operators.hpp"
+
+namespace aster::lang {
+namespace {
+
+Datum getField(Concept& self, const std::vector<Value>& args, Session&) {
+  auto& r = static_cast<ResultConcept&>(self);
+  if (args.empty() || args[0].kind != Value::Kind::Text)
+    throw Error("getField takes a field name and an instant: resu:getField('DEPL', 1.0)");
+  const ResultInstant& inst = args.size() > 1 && args[1].isNumber() ? r.at(args[1].real) : r.last();
+  auto c = std::make_shared<NodalFieldConcept>(r.model->meshPtr(), ResultConcept::nodalField(inst, args[0].text));
+  return Datum::ofConcept(c);
+}
+
+Datum accessParameters(Concept& self, const std::vector<Value>&, Session&) {
+  auto& r = static_cast<ResultConcept&>(self);
+  std::vector<Datum> inst, order;
+  for (const auto& i : r.instants) {
+    inst.push_back(Datum::ofReal(i.time));
+    order.push_back(Datum::ofInteger(i.index));
+  }
+  return Datum::ofMap({{"INST", Datum::ofList(inst)}, {"NUME_ORDRE", Datum::ofList(order)}});
+}
+
+Datum fieldValues(Concept& self, const std::vector<Value>&, Session&) {
+  std::vector<Datum> out;
+  for (double v : static_cast<NodalFieldConcept&>(self).field.values) out.push_back(Datum::ofReal(v));
+  return Datum::ofList(out);
+}
+
+Datum fieldComponents(Concept& self, const std::vector<Value>&, Session&) {
+  std::vector<Datum> out;
+  for (const auto& c : static_cast<NodalFieldConcept&>(self).field.components) out.push_back(Datum::ofText(c));
+  return Datum::ofList(out);
+}
+
+RegisterMethod m1("evol_noli", "getField", getField);
+RegisterMethod m2("evol_noli", "getAccessParameters", accessParameters);
+RegisterMethod m3("cham_no_sdaster", "getValues", fieldValues);
+RegisterMethod m4("cham_no_sdaster", "getComponents", fieldComponents);
+
+}  // namespace
+}  // namespace aster::lang

@@ -1,0 +1,179 @@
+// STAT_NON_LINE: quasi-static nonlinear analysis (Newton) over a list of instants.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "commands/contact_concept.hpp"
+#include "commands/function_concepts.hpp"
+#include "commands/list_inst_concept.hpp"
+#include "commands/model_concepts.hpp"
+#include "commands/result_concepts.hpp"
+#include "commands/selection.hpp"
+#include "core/error.hpp"
+#include "core/messages.hpp"
+#include "lang/operators.hpp"
+#include "solver/static_nonlinear.hpp"
+
+namespace aster::lang {
+namespace {
+
+mechanics::Kinematics kinematicsFromName(const std::string& d) {
+  if (d == "PETIT") return mechanics::Kinematics::SmallStrain;
+  if (d == "GROT_GDEP" || d == "GREEN_LAGRANGE") return mechanics::Kinematics::TotalLagrangianSVK;
+  throw Error("DEFORMATION='" + d + "' is not available (PETIT, GROT_GDEP, GREEN_LAGRANGE)");
+}
+
+// The instants of INCREMENT between INST_INIT and INST_FIN.
+std::vector<double> instantsOf(const Keywords& inc, int& subdPas, int& subdNiveau) {
+  const ConceptPtr list = inc.conceptPtr("LIST_INST");
+  std::vector<double> all;
+  if (auto* li = dynamic_cast<ListInstConcept*>(list.get())) {
+    all = li->times;
+    subdPas = li->subdPas;
+    subdNiveau = li->subdNiveau;
+  } else {
+    all = static_cast<RealListConcept&>(*list).values;
+  }
+  if (all.size() < 2) throw Error("INCREMENT/LIST_INST must hold at least two instants");
+  const double eps = 1e-6 * std::max(1.0, std::fabs(all.back() - all.front()));
+  const double t0 = inc.real("INST_INIT", all.front());
+  const double t1 = inc.real("INST_FIN", all.back());
+  std::vector<double> out;
+  for (double t : all)
+    if (t >= t0 - eps && t <= t1 + eps) out.push_back(t);
+  if (out.empty() || std::fabs(out.front() - t0) > eps)
+    throw Error("INCREMENT/INST_INIT=" + std::to_string(t0) + " is not an instant of LIST_INST");
+  if (out.size() < 2) throw Error("INCREMENT: no instant to compute between INST_INIT and INST_FIN");
+  return out;
+}
+
+ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
+  auto model = static_cast<ModelConcept&>(*k.conceptPtr("MODELE")).model;
+  const auto& mesh = model->mesh();
+  solver::MechanicalProblem problem;
+  problem.model = model;
+  auto matField = std::static_pointer_cast<MaterialFieldConcept>(k.conceptPtr("CHAM_MATER"));
+  if (matField->mesh != model->meshPtr())
+    throw Error("CHAM_MATER was built on another mesh than MODELE's");
+  problem.materials = matField->field;
+
+  // Behaviour: PETIT everywhere unless COMPORTEMENT says otherwise.
+  std::vector<mechanics::Kinematics> byCell(mesh.cellCount(), mechanics::Kinematics::SmallStrain);
+  for (const auto& occ : k.factor("COMPORTEMENT")) {
+    const auto kin = kinematicsFromName(occ.text("DEFORMATION"));
+    std::vector<int> cells = occ.has("GROUP_MA") ? selectCells(mesh, occ) : model->cells();
+    for (int c : cells) byCell[c] = kin;
+  }
+  for (int c : model->cells()) problem.kinematics.push_back(byCell[c]);
+
+  std::vector<std::shared_ptr<LoadConcept>> keep;
+  for (const auto& occ : k.factor("EXCIT")) {
+    auto load = std::static_pointer_cast<LoadConcept>(occ.conceptPtr("CHARGE"));
+    if (load->model != model) throw Error(occ.path + ": CHARGE was defined on another MODELE");
+    solver::AppliedLoad applied;
+    applied.load = &load->load;
+    if (occ.has("FONC_MULT")) {
+      applied.multiplier = functionOf(occ.conceptPtr("FONC_MULT"));
+      if (applied.multiplier->parameters().size() != 1 || applied.multiplier->parameters()[0] != "INST")
+        throw Error(occ.path + ": FONC_MULT must be a function of INST alone, it has parameters " +
+                    expr::joinNames(applied.multiplier->parameters()));
+    }
+    problem.loads.push_back(applied);
+    keep.push_back(load);
+  }
+
+  solver::NewtonSettings settings;
+  const auto& newton = k.factor("NEWTON").front();
+  settings.elasticMatrix = newton.text("MATRICE", "TANGENTE") == "ELASTIQUE";
+  settings.reacIter = static_cast<int>(newton.has("REAC_ITER") ? newton.integer("REAC_ITER") : 1);
+  const auto& conv = k.factor("CONVERGENCE").front();
+  settings.useRela = conv.has("RESI_GLOB_RELA");
+  if (settings.useRela) settings.resiGlobRela = conv.real("RESI_GLOB_RELA");
+  if (conv.has("RESI_GLOB_MAXI")) {
+    settings.resiGlobMaxi = conv.real("RESI_GLOB_MAXI");
+    if (!conv.has("RESI_GLOB_RELA")) settings.useRela = false;
+  }
+  settings.iterGlobMaxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
+  settings.method = k.factor("SOLVEUR").front().text("METHODE", "UMFPACK");
+  settings.print = k.integer("INFO") >= 1;
+  const auto times = instantsOf(k.factor("INCREMENT").front(), settings.subdPas, settings.subdNiveau);
+
+  solver::MechanicalSystem system(problem);
+  std::unique_ptr<solver::AdditionalTerms> terms;
+  if (k.has("CONTACT")) terms = static_cast<ContactConcept&>(*k.conceptPtr("CONTACT")).makeTerms(system);
+  solver::StaticNonlinear newtonSolver(system, terms.get(), settings);
+
+  std::shared_ptr<ResultConcept> result =
+      reuse ? std::static_pointer_cast<ResultConcept>(reuse) : std::make_shared<ResultConcept>(model);
+  Eigen::VectorXd U = Eigen::VectorXd::Zero(newtonSolver.unknownCount());
+  if (k.has("ETAT_INIT")) {
+    const auto& init = k.factor("ETAT_INIT").front();
+    if (init.has("EVOL_NOLI")) {
+      const auto& prev = static_cast<ResultConcept&>(*init.conceptPtr("EVOL_NOLI"));
+      const auto& inst = init.has("INST") ? prev.at(init.real("INST")) : prev.last();
+      const auto& depl = ResultConcept::nodalField(inst, "DEPL");
+      const int nc = static_cast<int>(depl.components.size());
+      for (int n = 0; n < mesh.nodeCount(); ++n)
+        for (int c = 0; c < 2; ++c)
+          if (system.dof(n, c) >= 0) U(system.dof(n, c)) = depl.values[n * nc + c];
+    }
+  }
+  if (!reuse) {
+    // NUME_ORDRE 0: the initial state.
+    ResultInstant first;
+    first.time = times.front();
+    mesh::NodalField depl{"DEPL", {"DX", "DY"}, std::vector<double>(2 * mesh.nodeCount(), 0.0)};
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+      for (int c = 0; c < 2; ++c)
+        if (system.dof(n, c) >= 0) depl.values[2 * n + c] = U(system.dof(n, c));
+    if (terms) terms->extendDisplacement(U, depl);
+    first.nodal.push_back(depl);
+    result->instants.push_back(first);
+  }
+
+  std::vector<int> gaussOffsets;
+  auto store = [&](const solver::ConvergedInstant& c) {
+    ResultInstant inst;
+    inst.index = static_cast<int>(result->instants.size());
+    inst.time = c.time;
+    inst.newtonIterations = c.iterations;
+    mesh::NodalField depl{"DEPL", {"DX", "DY"}, std::vector<double>(2 * mesh.nodeCount(), 0.0)};
+    mesh::NodalField reac{"REAC_NODA", {"DX", "DY"}, std::vector<double>(2 * mesh.nodeCount(), 0.0)};
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+      for (int comp = 0; comp < 2; ++comp) {
+        const int d = system.dof(n, comp);
+        if (d < 0) continue;
+        depl.values[2 * n + comp] = (*c.U)(d);
+        reac.values[2 * n + comp] = (*c.reactions)(d);
+      }
+    if (terms) terms->extendDisplacement(*c.U, depl);
+    inst.nodal.push_back(std::move(depl));
+    inst.nodal.push_back(std::move(reac));
+    if (terms) terms->outputFields(*c.U, inst.nodal);
+    GaussField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, model->cells(), {}, {}};
+    system.gaussStresses(*c.U, sief.offsets, sief.values);
+    inst.gauss.push_back(std::move(sief));
+    result->instants.push_back(std::move(inst));
+  };
+  try {
+    newtonSolver.run(U, times, store);
+  } catch (const Error& e) {
+    // The converged instants stay in the result; the study stops here.
+    throw Error(std::string(e.what()) + "; " + std::to_string(result->instants.size()) +
+                " instant(s) were stored before the failure");
+  }
+  const auto& st = newtonSolver.statistics();
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "STAT_NON_LINE: %zu instants, %d Newton iterations, %d factorizations, %d step cuts; "
+                "%d unknowns; %.3f s (assembly %.3f s, linear solver %.3f s)",
+                times.size() - 1, st.iterations, st.factorizations, st.cuts, newtonSolver.unknownCount(),
+                st.totalSeconds, st.assemblySeconds, st.solveSeconds);
+  Messages::info(buf);
+  return result;
+}
+
+RegisterOperator reg("STAT_NON_LINE", statNonLine);
+
+}  // namespace
+}  // namespace aster::lang

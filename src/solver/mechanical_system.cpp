@@ -1,0 +1,254 @@
+#include "solver/mechanical_system.hpp"
+
+#include <map>
+#include <tuple>
+
+#include "core/error.hpp"
+#include "mechanics/loads.hpp"
+#include "mesh/cell_type.hpp"
+
+namespace aster::solver {
+namespace {
+
+fem::CellType femType(mesh::CellType t) {
+  switch (t) {
+    case mesh::CellType::SEG2: return fem::CellType::SEG2;
+    case mesh::CellType::SEG3: return fem::CellType::SEG3;
+    case mesh::CellType::TRIA3: return fem::CellType::TRIA3;
+    case mesh::CellType::TRIA6: return fem::CellType::TRIA6;
+    case mesh::CellType::QUAD4: return fem::CellType::QUAD4;
+    case mesh::CellType::QUAD8: return fem::CellType::QUAD8;
+    case mesh::CellType::QUAD9: return fem::CellType::QUAD9;
+    default: throw Error("a " + mesh::cellTypeName(t) + " cell cannot carry a plane load");
+  }
+}
+
+mechanics::PlaneHypothesis hypothesisOf(model::Modelisation m) {
+  return m == model::Modelisation::PlaneStrain ? mechanics::PlaneHypothesis::PlaneStrain
+                                               : mechanics::PlaneHypothesis::PlaneStress;
+}
+
+constexpr int kMaxNodes = 9;
+
+}  // namespace
+
+MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::move(problem)) {
+  const model::Model& m = *problem_.model;
+  const mesh::Mesh& mesh = m.mesh();
+  std::vector<int> perNode(mesh.nodeCount(), 0);
+  for (int n = 0; n < mesh.nodeCount(); ++n) perNode[n] = m.nodeInModel(n) ? 2 : 0;
+  dofs_ = fem::DofMap(perNode);
+  if (problem_.kinematics.size() != m.cells().size())
+    throw Error("internal error: one kinematics per cell of the model is expected");
+
+  // One kernel per (type, material, modelisation, kinematics).
+  std::map<std::tuple<int, const model::ElasticMaterial*, int, int>, const ElementKernel*> cache;
+  for (std::size_t k = 0; k < m.cells().size(); ++k) {
+    const int c = m.cells()[k];
+    const model::ElasticMaterial* mat = problem_.materials ? problem_.materials->at(c) : nullptr;
+    if (!mat)
+      throw Error("cell " + mesh.cellName(c) + " of the model has no material (AFFE_MATERIAU covers it?)");
+    const auto key = std::make_tuple(static_cast<int>(mesh.cellType(c)), mat,
+                                     static_cast<int>(m.modelisation(k)), static_cast<int>(problem_.kinematics[k]));
+    auto it = cache.find(key);
+    if (it == cache.end()) {
+      kernels_.push_back(makePlaneKernel(mesh.cellType(c),
+                                         mechanics::PlaneElasticity(mat->E, mat->NU, hypothesisOf(m.modelisation(k))),
+                                         problem_.kinematics[k]));
+      it = cache.emplace(key, kernels_.back().get()).first;
+    }
+    std::vector<int> d;
+    for (int n : mesh.cellNodes(c)) {
+      d.push_back(dofs_.dof(n, 0));
+      d.push_back(dofs_.dof(n, 1));
+    }
+    cells_.push_back({c, it->second, elements_.add(d)});
+  }
+  for (const auto& applied : problem_.loads) {
+    for (const auto& p : applied.load->pressures)
+      for (int c : p.cells) {
+        std::vector<int> d;
+        for (int n : mesh.cellNodes(c)) {
+          d.push_back(dofs_.dof(n, 0));
+          d.push_back(dofs_.dof(n, 1));
+        }
+        pressureEdges_.push_back({c, elements_.add(d), &p.p, &applied});
+      }
+  }
+  // Dead loads that do not depend on time are integrated once.
+  for (const auto& applied : problem_.loads) {
+    bool timeDependent = false;
+    for (const auto& f : applied.load->edgeForces) timeDependent |= f.fx.dependsOnTime() || f.fy.dependsOnTime();
+    for (const auto& f : applied.load->bodyForces) timeDependent |= f.fx.dependsOnTime() || f.fy.dependsOnTime();
+    for (const auto& f : applied.load->nodalForces) timeDependent |= f.fx.dependsOnTime() || f.fy.dependsOnTime();
+    constantDeadLoads_.push_back(timeDependent ? Eigen::VectorXd() : deadLoadVector(*applied.load, 0.0));
+  }
+}
+
+void MechanicalSystem::gatherCoords(int meshCell, double* X) const {
+  const mesh::Mesh& mesh = problem_.model->mesh();
+  const auto nodes = mesh.cellNodes(meshCell);
+  const int n = nodes.size();
+  for (int a = 0; a < n; ++a) {
+    const double* x = mesh.coordinates().data() + 3 * nodes[a];
+    X[a] = x[0];
+    X[n + a] = x[1];
+  }
+}
+
+Eigen::VectorXd MechanicalSystem::deadLoadVector(const model::MechanicalLoad& load, double t) const {
+  const mesh::Mesh& mesh = problem_.model->mesh();
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(dofCount());
+  double X[2 * kMaxNodes];
+  auto scatter = [&](int cell, const double* fe) {
+    const auto nodes = mesh.cellNodes(cell);
+    for (int a = 0; a < nodes.size(); ++a) {
+      if (!dofs_.count(nodes[a])) continue;
+      F(dofs_.dof(nodes[a], 0)) += fe[2 * a];
+      F(dofs_.dof(nodes[a], 1)) += fe[2 * a + 1];
+    }
+  };
+  for (const auto& ef : load.edgeForces) {
+    auto traction = [&](const Eigen::Vector2d& p) {
+      return Eigen::Vector2d(ef.fx(p(0), p(1), 0.0, t), ef.fy(p(0), p(1), 0.0, t));
+    };
+    for (int c : ef.cells) {
+      gatherCoords(c, X);
+      fem::dispatchEdge(femType(mesh.cellType(c)), [&](auto tag) {
+        constexpr fem::CellType T = decltype(tag)::value;
+        const Eigen::Map<const fem::EdgeCoords<T>> x(X);
+        const auto fe = mechanics::deadEdgeTraction<T>(x, traction);
+        scatter(c, fe.data());
+      });
+    }
+  }
+  for (const auto& bf : load.bodyForces) {
+    auto force = [&](const Eigen::Vector2d& p) {
+      return Eigen::Vector2d(bf.fx(p(0), p(1), 0.0, t), bf.fy(p(0), p(1), 0.0, t));
+    };
+    for (int c : bf.cells) {
+      gatherCoords(c, X);
+      fem::dispatchSurface(femType(mesh.cellType(c)), [&](auto tag) {
+        constexpr fem::CellType T = decltype(tag)::value;
+        const Eigen::Map<const fem::NodeCoords<T>> x(X);
+        const auto fe = mechanics::bodyForce<T>(x, force);
+        scatter(c, fe.data());
+      });
+    }
+  }
+  for (const auto& nf : load.nodalForces)
+    for (int n : nf.nodes) {
+      if (!dofs_.count(n)) continue;
+      const Eigen::Vector3d p = mesh.node(n);
+      F(dofs_.dof(n, 0)) += nf.fx(p(0), p(1), p(2), t);
+      F(dofs_.dof(n, 1)) += nf.fy(p(0), p(1), p(2), t);
+    }
+  return F;
+}
+
+void MechanicalSystem::addDeadLoads(double t, Eigen::VectorXd& fext) const {
+  for (std::size_t i = 0; i < problem_.loads.size(); ++i) {
+    const double factor = problem_.loads[i].factor(t);
+    if (constantDeadLoads_[i].size())
+      fext += factor * constantDeadLoads_[i];
+    else
+      fext += factor * deadLoadVector(*problem_.loads[i].load, t);
+  }
+}
+
+void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
+                                const fem::AssemblyPattern* pattern, SparseMatrix* K) const {
+  fint.setZero(dofCount());
+  fext.setZero(dofCount());
+  double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
+  for (const Cell& cell : cells_) {
+    gatherCoords(cell.meshCell, X);
+    const int n = cell.kernel->nodes();
+    const int* d = elements_.dofs(cell.element);
+    for (int i = 0; i < 2 * n; ++i) u[i] = U(d[i]);
+    cell.kernel->internalForce(X, u, fe, K ? Ke : nullptr);
+    for (int i = 0; i < 2 * n; ++i) fint(d[i]) += fe[i];
+    if (K) pattern->addMatrix(cell.element, Ke, K->valuePtr());
+  }
+  addDeadLoads(t, fext);
+  const mesh::Mesh& mesh = problem_.model->mesh();
+  for (const Edge& e : pressureEdges_) {
+    gatherCoords(e.meshCell, X);
+    const double factor = e.load->factor(t);
+    const int* d = elements_.dofs(e.element);
+    auto pressure = [&](const Eigen::Vector2d& p) { return factor * (*e.p)(p(0), p(1), 0.0, t); };
+    fem::dispatchEdge(femType(mesh.cellType(e.meshCell)), [&](auto tag) {
+      constexpr fem::CellType T = decltype(tag)::value;
+      constexpr int nd = 2 * fem::Cell<T>::nodes;
+      const Eigen::Map<const fem::EdgeCoords<T>> x(X);
+      mechanics::EdgeVector<T> ue, f;
+      mechanics::EdgeMatrix<T> dfdu;
+      for (int i = 0; i < nd; ++i) ue(i) = U(d[i]);
+      mechanics::followerPressure<T>(x, ue, pressure, &f, K ? &dfdu : nullptr);
+      for (int i = 0; i < nd; ++i) fext(d[i]) += f(i);
+      if (K) {
+        mechanics::EdgeMatrix<T> minus = -dfdu;
+        pattern->addMatrix(e.element, minus.data(), K->valuePtr());
+      }
+    });
+  }
+}
+
+std::vector<std::pair<int, double>> MechanicalSystem::imposed(double t) const {
+  const mesh::Mesh& mesh = problem_.model->mesh();
+  std::vector<int> slot(dofCount(), -1);
+  std::vector<std::pair<int, double>> out;
+  for (const auto& applied : problem_.loads) {
+    const double factor = applied.factor(t);
+    for (const auto& im : applied.load->imposed)
+      for (int n : im.nodes) {
+        const int d = dof(n, im.component);
+        if (d < 0) throw Error("imposed displacement on node " + mesh.nodeName(n) + ", which carries no DOF");
+        const Eigen::Vector3d p = mesh.node(n);
+        const double v = factor * im.value(p(0), p(1), p(2), t);
+        if (slot[d] >= 0) {
+          out[slot[d]].second = v;
+        } else {
+          slot[d] = static_cast<int>(out.size());
+          out.emplace_back(d, v);
+        }
+      }
+  }
+  return out;
+}
+
+void MechanicalSystem::gaussStresses(const Eigen::VectorXd& U, std::vector<int>& offsets,
+                                     std::vector<double>& values) const {
+  offsets.assign(1, 0);
+  values.clear();
+  double X[2 * kMaxNodes], u[2 * kMaxNodes];
+  std::vector<double> s;
+  for (const Cell& cell : cells_) {
+    gatherCoords(cell.meshCell, X);
+    const int* d = elements_.dofs(cell.element);
+    for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) u[i] = U(d[i]);
+    s.resize(4 * cell.kernel->gaussPoints());
+    cell.kernel->stresses(X, u, s.data());
+    values.insert(values.end(), s.begin(), s.end());
+    offsets.push_back(static_cast<int>(values.size()));
+  }
+}
+
+void MechanicalSystem::gaussGeometry(std::vector<int>& offsets, std::vector<double>& xy,
+                                     std::vector<double>& weights) const {
+  offsets.assign(1, 0);
+  xy.clear();
+  weights.clear();
+  double X[2 * kMaxNodes];
+  for (const Cell& cell : cells_) {
+    gatherCoords(cell.meshCell, X);
+    const int q = cell.kernel->gaussPoints();
+    const std::size_t w0 = weights.size();
+    xy.resize(xy.size() + 2 * q);
+    weights.resize(w0 + q);
+    cell.kernel->gaussGeometry(X, xy.data() + 2 * w0, weights.data() + w0);
+    offsets.push_back(static_cast<int>(weights.size()));
+  }
+}
+
+}  // namespace aster::solver

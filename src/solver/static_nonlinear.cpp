@@ -1,0 +1,233 @@
+#include "solver/static_nonlinear.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "core/messages.hpp"
+#include "solver/linear_solver.hpp"
+
+namespace aster::solver {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
+
+std::string sci(double v, int digits = 6) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*E", digits, v);
+  return buf;
+}
+
+}  // namespace
+
+struct StaticNonlinear::SolverHolder {
+  std::unique_ptr<LinearSolver> solver;
+};
+
+StaticNonlinear::StaticNonlinear(const MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings)
+    : system_(system), terms_(terms), settings_(std::move(settings)), solver_(std::make_shared<SolverHolder>()) {
+  n_ = system_.dofCount();
+  if (terms_) {
+    terms_->setFirstUnknown(n_);
+    n_ += terms_->unknownCount();
+  }
+  solver_->solver = makeLinearSolver(settings_.method);
+}
+
+void StaticNonlinear::buildPattern() {
+  fem::ElementDofs all = system_.elementDofs();
+  termsFirstElement_ = all.elementCount();
+  if (terms_) terms_->elementDofs(all);
+  // Every unknown gets its diagonal: eliminated rows become identity rows.
+  for (int i = 0; i < n_; ++i) all.add(&i, 1);
+  pattern_ = std::make_unique<fem::AssemblyPattern>(n_, all);
+  K_ = pattern_->newMatrix();
+  Kelastic_.resize(0, 0);
+  analyzed_ = false;
+}
+
+void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatrix) {
+  const auto start = Clock::now();
+  if (withMatrix) fem::AssemblyPattern::clear(K_);
+  system_.evaluate(U, t, fint_, fext_, pattern_.get(), withMatrix ? &K_ : nullptr);
+  r_.setZero(n_);
+  r_.head(system_.dofCount()) = fint_ - fext_;
+  if (terms_) terms_->assemble(U, r_, *pattern_, termsFirstElement_, withMatrix ? &K_ : nullptr);
+  stats_.assemblySeconds += seconds(start);
+}
+
+bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::vector<double>& history,
+                                std::string& why) {
+  (void)t0;
+  const int nm = system_.dofCount();
+  const auto imposed = system_.imposed(t1);
+  std::vector<char> fixed(n_, 0), lastFixed;
+  Eigen::VectorXd target = Eigen::VectorXd::Zero(n_);  // values of the fixed unknowns
+  fem::SparseMatrix Kmod;
+  bool statusChanged = false;
+  LinearSolver& solver = *solver_->solver;
+  history.clear();
+  if (settings_.print)
+    Messages::info("  Instant " + sci(t1) + "\n    iter  " + (settings_.useRela ? "RESI_GLOB_RELA" : "RESI_GLOB_MAXI") +
+                   "   RESI_GLOB_MAXI   matrix       " + (terms_ ? "contact" : ""));
+  for (int k = 0;; ++k) {
+    if (terms_ && terms_->update(U)) buildPattern();
+    if (!pattern_) buildPattern();
+    const bool newMatrix = !settings_.elasticMatrix && (k == 0 || (settings_.reacIter > 0 && k % settings_.reacIter == 0));
+    assemble(U, t1, newMatrix);
+    if (settings_.elasticMatrix && Kelastic_.size() == 0) {
+      Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
+      Eigen::VectorXd keepFint = fint_, keepFext = fext_, keepR = r_;
+      assemble(zero, t1, true);
+      Kelastic_ = K_;
+      fint_ = keepFint;
+      fext_ = keepFext;
+      r_ = keepR;
+    }
+
+    // The fixed unknowns: imposed displacements, and what the terms fix.
+    std::fill(fixed.begin(), fixed.end(), 0);
+    for (const auto& [d, v] : imposed) {
+      fixed[d] = 1;
+      target(d) = v;
+    }
+    if (terms_) {
+      std::vector<int> extra;
+      terms_->fixedUnknowns(extra);
+      for (int d : extra) {
+        fixed[d] = 1;
+        target(d) = 0.0;
+      }
+    }
+
+    // Residual on the free unknowns, relative to the forces that balance the
+    // internal forces (external loads plus support reactions), as code_aster.
+    double resMax = 0, denom = 0;
+    for (int i = 0; i < n_; ++i) {
+      if (fixed[i]) {
+        if (i < nm) denom = std::max(denom, std::fabs(fint_(i)));
+        continue;
+      }
+      resMax = std::max(resMax, std::fabs(r_(i)));
+      if (i < nm) denom = std::max(denom, std::fabs(r_(i) - fint_(i)));  // the loads that balance fint
+    }
+    if (!std::isfinite(resMax)) {
+      why = "the residual is not a number (the state became invalid)";
+      return false;
+    }
+    const double rela = denom > 0 ? resMax / denom : resMax;
+    const double measure = settings_.useRela ? rela : resMax;
+    history.push_back(measure);
+    if (settings_.print)
+      Messages::info("    " + std::string(k < 10 ? "   " : "  ") + std::to_string(k) + "  " + sci(rela) + "     " +
+                     sci(resMax, 2) + "         " + (newMatrix || (settings_.elasticMatrix && k == 0) ? "TANGENTE " : "         ") +
+                     (settings_.elasticMatrix ? "(ELAS)" : "      ") + "  " + (terms_ ? terms_->statusText() : ""));
+    const double tolerance = settings_.useRela ? settings_.resiGlobRela : settings_.resiGlobMaxi;
+    bool dirichletMet = true;
+    for (const auto& [d, v] : imposed) dirichletMet = dirichletMet && std::fabs(U(d) - v) <= 1e-12 * (1 + std::fabs(v));
+    if (k > 0 && measure <= tolerance && !statusChanged && dirichletMet) {
+      stats_.iterations += k;
+      return true;
+    }
+    if (k >= settings_.iterGlobMaxi) {
+      why = "no convergence in ITER_GLOB_MAXI = " + std::to_string(settings_.iterGlobMaxi) + " Newton iterations (" +
+            (settings_.useRela ? "RESI_GLOB_RELA" : "RESI_GLOB_MAXI") + " = " + sci(measure, 3) + ")";
+      stats_.iterations += k;
+      return false;
+    }
+
+    // Newton correction: K dU = -r on the free unknowns, dU = target - U on the fixed ones.
+    const auto solveStart = Clock::now();
+    Eigen::VectorXd dUc = Eigen::VectorXd::Zero(n_);
+    for (int i = 0; i < n_; ++i)
+      if (fixed[i]) dUc(i) = target(i) - U(i);
+    const fem::SparseMatrix& Kuse = settings_.elasticMatrix ? Kelastic_ : K_;
+    Eigen::VectorXd rhs = -r_;
+    if (dUc.lpNorm<Eigen::Infinity>() > 0) rhs -= Kuse * dUc;
+    const bool refactor = newMatrix || (settings_.elasticMatrix && k == 0) || fixed != lastFixed;
+    if (refactor) {
+      Kmod = Kuse;
+      for (int j = 0; j < Kmod.outerSize(); ++j)
+        for (fem::SparseMatrix::InnerIterator it(Kmod, j); it; ++it)
+          if (fixed[j] || fixed[it.row()]) it.valueRef() = (it.row() == j) ? 1.0 : 0.0;
+      try {
+        if (!analyzed_) {
+          solver.analyze(Kmod);
+          analyzed_ = true;
+        }
+        solver.factorize(Kmod);
+      } catch (const SingularMatrixError& e) {
+        std::string where;
+        const int col = e.column() >= 0 ? e.column() : e.row();
+        if (col >= 0 && col < nm) {
+          const auto& map = system_.dofMap();
+          for (int node = 0; node < map.nodeCount(); ++node)
+            if (map.count(node) && col >= map.first(node) && col < map.first(node) + map.count(node))
+              where = " (unknown " + std::string(col == map.first(node) ? "DX" : "DY") + " of node " +
+                      system_.model().mesh().nodeName(node) + ")";
+        } else if (col >= nm) {
+          where = " (a contact unknown)";
+        }
+        throw Error(std::string(e.what()) + where);
+      }
+      ++stats_.factorizations;
+      lastFixed = fixed;
+    }
+    for (int i = 0; i < n_; ++i)
+      if (fixed[i]) rhs(i) = dUc(i);
+    Eigen::VectorXd dU;
+    solver.solve(rhs, dU);
+    stats_.solveSeconds += seconds(solveStart);
+    U += dU;
+    statusChanged = terms_ ? terms_->updateStatus(U) : false;
+  }
+}
+
+void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
+                          const std::function<void(const ConvergedInstant&)>& converged) {
+  const auto start = Clock::now();
+  if (U.size() != n_) throw Error("internal error: the initial state has the wrong size");
+  std::vector<double> history;
+  std::function<bool(double, double, int, std::string&)> interval = [&](double t0, double t1, int level,
+                                                                        std::string& why) {
+    const Eigen::VectorXd U0 = U;
+    if (terms_) terms_->saveStatus();
+    if (solveStep(U, t0, t1, history, why)) return true;
+    U = U0;
+    if (terms_) terms_->restoreStatus();
+    if (level >= settings_.subdNiveau || settings_.subdPas < 2) return false;
+    ++stats_.cuts;
+    Messages::alarm("STAT_NON_LINE", "instant " + sci(t1) + ": " + why + "; the step [" + sci(t0, 4) + ", " +
+                                         sci(t1, 4) + "] is cut into " + std::to_string(settings_.subdPas) +
+                                         " (level " + std::to_string(level + 1) + ")");
+    for (int i = 1; i <= settings_.subdPas; ++i) {
+      const double a = t0 + (t1 - t0) * (i - 1) / settings_.subdPas;
+      const double b = (i == settings_.subdPas) ? t1 : t0 + (t1 - t0) * i / settings_.subdPas;
+      if (!interval(a, b, level + 1, why)) return false;
+    }
+    return true;
+  };
+  for (std::size_t k = 1; k < times.size(); ++k) {
+    std::string why;
+    if (!interval(times[k - 1], times[k], 0, why)) {
+      stats_.totalSeconds += seconds(start);
+      throw Error("the instant " + sci(times[k]) + " did not converge: " + why +
+                  (settings_.subdNiveau > 0 ? " (even after cutting the step " + std::to_string(settings_.subdNiveau) +
+                                                  " times)"
+                                            : ""));
+    }
+    Eigen::VectorXd reactions = r_;
+    ConvergedInstant c;
+    c.time = times[k];
+    c.U = &U;
+    c.reactions = &reactions;
+    c.iterations = static_cast<int>(history.size()) - 1;
+    c.residuals = history;
+    converged(c);
+  }
+  stats_.totalSeconds += seconds(start);
+}
+
+}  // namespace aster::solver

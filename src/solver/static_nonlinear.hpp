@@ -1,0 +1,77 @@
+// STAT_NON_LINE's algorithm: incremental loading over a list of instants,
+// Newton-Raphson at each instant with the consistent tangent, imposed
+// displacements eliminated (rows and columns replaced by the identity, which
+// keeps a symmetric tangent symmetric), and automatic step cutting on failure
+// (DEFI_LIST_INST's ECHEC: SUBD_PAS sub-steps, at most SUBD_NIVEAU levels).
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solver/additional_terms.hpp"
+#include "solver/mechanical_system.hpp"
+
+namespace aster::solver {
+
+struct NewtonSettings {
+  bool elasticMatrix = false;  // MATRICE='ELASTIQUE': the tangent at U = 0, kept
+  int reacIter = 1;            // REAC_ITER: reassemble the tangent every n iterations (0: never)
+  bool useRela = true;         // RESI_GLOB_RELA, else RESI_GLOB_MAXI
+  double resiGlobRela = 1e-6;
+  double resiGlobMaxi = 1e-6;
+  int iterGlobMaxi = 10;
+  std::string method = "UMFPACK";
+  int subdPas = 4;     // SUBD_PAS
+  int subdNiveau = 3;  // SUBD_NIVEAU (0: no cutting)
+  bool print = true;   // the convergence table
+};
+
+struct ConvergedInstant {
+  double time = 0;
+  const Eigen::VectorXd* U = nullptr;         // all unknowns
+  const Eigen::VectorXd* reactions = nullptr;  // fint - fext (+ terms), nonzero at supports
+  int iterations = 0;
+  std::vector<double> residuals;  // RESI_GLOB_RELA (or MAXI) per iteration
+};
+
+struct NewtonStatistics {
+  int iterations = 0, factorizations = 0, cuts = 0;
+  double assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;
+};
+
+class StaticNonlinear {
+ public:
+  StaticNonlinear(const MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings);
+
+  // Runs from U (the state at times[0]) through every later instant; calls
+  // `converged` after each. Throws aster::Error naming the instant that failed;
+  // instants converged before stay reported.
+  void run(Eigen::VectorXd& U, const std::vector<double>& times,
+           const std::function<void(const ConvergedInstant&)>& converged);
+
+  int unknownCount() const { return n_; }
+  const NewtonStatistics& statistics() const { return stats_; }
+
+ private:
+  struct Attempt;
+  bool solveStep(Eigen::VectorXd& U, double t0, double t1, std::vector<double>& history, std::string& why);
+  void buildPattern();
+  void assemble(const Eigen::VectorXd& U, double t, bool withMatrix);
+
+  const MechanicalSystem& system_;
+  AdditionalTerms* terms_;
+  NewtonSettings settings_;
+  int n_ = 0;
+  std::unique_ptr<fem::AssemblyPattern> pattern_;
+  int termsFirstElement_ = 0;
+  fem::SparseMatrix K_, Kelastic_;
+  Eigen::VectorXd fint_, fext_, r_;
+  NewtonStatistics stats_;
+  struct SolverHolder;
+  std::shared_ptr<SolverHolder> solver_;
+  bool analyzed_ = false;
+};
+
+}  // namespace aster::solver
