@@ -16,6 +16,9 @@ struct Session {
   std::filesystem::path outputDir;  // results, tables, plots
   std::map<int, std::filesystem::path> units;  // DEFI_FICHIER and -u N=path
 
+  // --unsafe-lua: keep os.execute, io.popen, binary chunks and C modules.
+  bool unsafeLua = false;
+
   // Where the command being run was called from: "studies/a.lua:12".
   std::string where;
   std::string command;
