@@ -240,7 +240,13 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
                   std::string(ASTER_VERSION) + " yet; no result is produced");
     session.where = where;
     session.command = spec.name;
+    session.produced.clear();
     ConceptPtr result = (*op)(valid, session, reuse);
+    for (auto& [name, concept] : session.produced) {
+      pushConcept(L, concept);
+      lua_setglobal(L, name.c_str());
+    }
+    session.produced.clear();
     if (!result) {
       if (spec.kind == CommandSpec::Kind::Oper) throw Error("internal error: the operator returned no concept");
       return 0;

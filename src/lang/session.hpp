@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/concept.hpp"
@@ -22,6 +23,10 @@ struct Session {
   // Where the command being run was called from: "studies/a.lua:12".
   std::string where;
   std::string command;
+
+  // Concepts a macro-command created under names given with CO('name'):
+  // the interpreter binds each to a global variable of the study after the call.
+  std::vector<std::pair<std::string, ConceptPtr>> produced;
 
   // TEST_RESU and friends: counts, and the lines of <output-dir>/<study>.resu.
   int checksOk = 0;
