@@ -24,6 +24,7 @@ const char* kUsage =
     "                    (default: a folder named after the study, next to it)\n"
     "  -u N=PATH         bind file PATH to logical unit N (as DEFI_FICHIER does)\n"
     "  --quiet           print only alarms, errors and check results\n"
+    "  --unsafe-lua      give the study os.execute, io.popen, binary chunks and C modules\n"
     "  --doc FILE        write the command reference (Markdown) to FILE and exit\n"
     "  --version         print the version and exit\n"
     "  --help            print this help and exit\n"
@@ -58,6 +59,8 @@ int main(int argc, char** argv) {
         return 0;
       } else if (a == "--quiet" || a == "-q") {
         quiet = true;
+      } else if (a == "--unsafe-lua") {
+        session.unsafeLua = true;
       } else if (a == "--output-dir") {
         outputDir = next("--output-dir");
       } else if (a == "-u") {

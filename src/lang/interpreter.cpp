@@ -240,7 +240,13 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
                   std::string(ASTER_VERSION) + " yet; no result is produced");
     session.where = where;
     session.command = spec.name;
+    session.produced.clear();
     ConceptPtr result = (*op)(valid, session, reuse);
+    for (auto& [name, concept] : session.produced) {
+      pushConcept(L, concept);
+      lua_setglobal(L, name.c_str());
+    }
+    session.produced.clear();
     if (!result) {
       if (spec.kind == CommandSpec::Kind::Oper) throw Error("internal error: the operator returned no concept");
       return 0;
@@ -456,6 +462,22 @@ Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), 
     lua_pushlightuserdata(L, const_cast<CommandSpec*>(&spec));
     lua_pushcclosure(L, callCommand, 1);
     lua_setglobal(L, name.c_str());
+  }
+  if (!session.unsafeLua) {
+    // A study is data, not a program that may run other programs: no shell,
+    // no pipes, no binary chunks, no C modules (--unsafe-lua restores them).
+    const char* sandbox = R"(
+      os.execute, io.popen, package.loadlib = nil, nil, nil
+      package.cpath = ''
+      table.remove(package.searchers, 4); table.remove(package.searchers, 3)
+      local load_, loadfile_ = load, loadfile
+      load = function(chunk, name, mode, env) return load_(chunk, name, 't', env) end
+      loadfile = function(file, mode, env) return loadfile_(file, 't', env) end
+      dofile = function(file)
+        local f, err = loadfile_(file, 't'); if not f then error(err, 2) end; return f()
+      end
+    )";
+    if (luaL_dostring(L, sandbox) != LUA_OK) throw Error(std::string("Lua sandbox: ") + lua_tostring(L, -1));
   }
   lua_pushcfunction(L, callF);
   lua_setglobal(L, "_F");

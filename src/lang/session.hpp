@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/concept.hpp"
@@ -16,9 +17,16 @@ struct Session {
   std::filesystem::path outputDir;  // results, tables, plots
   std::map<int, std::filesystem::path> units;  // DEFI_FICHIER and -u N=path
 
+  // --unsafe-lua: keep os.execute, io.popen, binary chunks and C modules.
+  bool unsafeLua = false;
+
   // Where the command being run was called from: "studies/a.lua:12".
   std::string where;
   std::string command;
+
+  // Concepts a macro-command created under names given with CO('name'):
+  // the interpreter binds each to a global variable of the study after the call.
+  std::vector<std::pair<std::string, ConceptPtr>> produced;
 
   // TEST_RESU and friends: counts, and the lines of <output-dir>/<study>.resu.
   int checksOk = 0;

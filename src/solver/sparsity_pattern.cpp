@@ -52,11 +52,15 @@ void requireSymmetric(const Matrix& A, double relTol, const std::string& method)
   // their entries can be walked in lockstep.
   const Matrix difference = A - At;
   const Matrix scale = A.cwiseAbs() + At.cwiseAbs();
+  // Round-off on an entry is relative to the diagonal too: a_ij = 1e-17 against
+  // a_ji = 0 next to diagonals of order 1 is symmetric for every purpose.
+  const Eigen::VectorXd diagonal = A.diagonal().cwiseAbs();
   for (int j = 0; j < difference.outerSize(); ++j) {
     Matrix::InnerIterator d(difference, j);
     Matrix::InnerIterator m(scale, j);
     for (; d && m; ++d, ++m) {
-      if (std::abs(d.value()) > relTol * m.value()) {
+      const double size = m.value() + std::sqrt(diagonal(d.index()) * diagonal(j));
+      if (std::abs(d.value()) > relTol * size) {
         const int i = static_cast<int>(d.index());
         std::ostringstream s;
         s.precision(17);

@@ -88,3 +88,14 @@ TEST(Interpreter, ErrorInsideAStudyFunctionPointsAtTheCall) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind("<F> <DEBUT> etude.lua:2:", 0), 0u) << r.err;
 }
+
+TEST(Interpreter, StudiesRunSandboxed) {
+  StudyRun r = run("assert(os.execute == nil and io.popen == nil and package.loadlib == nil)\n"
+                   "local f, err = load(string.dump(function() return 1 end))\n"
+                   "assert(f == nil and err:find('binary'))\n"
+                   "assert(load('return 2')() == 2)\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = run("os.execute('true')\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("attempt to call a nil value (field 'execute')"), std::string::npos) << r.err;
+}
