@@ -1,0 +1,140 @@
+// CONTINUE contact terms of one slave cell (formulation in the header).
+#include "contact/continue_formulation.hpp"
+
+#include <sstream>
+
+#include "contact/gap.hpp"
+#include "fem/quadrature.hpp"
+
+namespace aster::contact {
+
+const char* pointStatusName(PointStatus s) {
+  switch (s) {
+    case PointStatus::Contact: return "contact";
+    case PointStatus::Separated: return "separated";
+    case PointStatus::Unpaired: return "unpaired";
+  }
+  return "?";
+}
+
+namespace {
+
+struct PointRule {
+  double xi[fem::kMaxGaussPoints];
+  double w[fem::kMaxGaussPoints];
+  int size = 0;
+};
+
+PointRule slaveRule(fem::CellType type, const ContinueOptions& o) {
+  PointRule r;
+  if (o.integration == ContactIntegration::Nodes) {
+    // Newton-Cotes at the nodes, in node order (1 at -1, 2 at +1, 3 at 0).
+    if (type == fem::CellType::SEG3) {
+      r.size = 3;
+      r.xi[0] = -1, r.xi[1] = 1, r.xi[2] = 0;
+      r.w[0] = 1.0 / 3, r.w[1] = 1.0 / 3, r.w[2] = 4.0 / 3;
+    } else {
+      r.size = 2;
+      r.xi[0] = -1, r.xi[1] = 1;
+      r.w[0] = 1, r.w[1] = 1;
+    }
+    return r;
+  }
+  if (o.gaussPoints < 1 || o.gaussPoints > fem::kMaxGaussPoints)
+    throw Error("CONTINUE contact: the number of Gauss points per slave cell must be in 1.." +
+                std::to_string(fem::kMaxGaussPoints) + ", got " + std::to_string(o.gaussPoints));
+  const auto& q = fem::gaussLegendre(o.gaussPoints);
+  r.size = q.size();
+  for (int i = 0; i < r.size; ++i) r.xi[i] = q.points[i](0), r.w[i] = q.weights[i];
+  return r;
+}
+
+}  // namespace
+
+void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& masters, const ContinueOptions& options,
+                       ContinueCellTerms& out) {
+  checkSegmentType(slave.type, "slave");
+  if (!(options.rho > 0))
+    throw Error("CONTINUE contact: COEF_CONT must be > 0, got " + std::to_string(options.rho));
+  if (masters.empty()) throw Error("CONTINUE contact: no master segment given");
+  const int ns = slave.type == fem::CellType::SEG3 ? 3 : 2;
+  int n = 2 * ns;
+  out.masterOffsets.resize(masters.size());
+  for (std::size_t k = 0; k < masters.size(); ++k) {
+    checkSegmentType(masters[k].type, "master");
+    out.masterOffsets[k] = n;
+    n += 2 * masters[k].nodes();
+  }
+  out.lagrangeOffset = n;
+  n += 2;
+  out.residual.setZero(n);
+  out.tangent.setZero(n, n);
+  out.points.clear();
+
+  const double rho = options.rho;
+  const int lo = out.lagrangeOffset;
+  const PointRule rule = slaveRule(slave.type, options);
+  for (int i = 0; i < rule.size; ++i) {
+    const double xi = rule.xi[i];
+    const SegmentShape sh = segmentShape(slave.type, xi);
+    const Eigen::Vector2d dX = slave.reference.topRows(ns).transpose() * sh.dN.head(ns);
+    const double J0 = dX.norm();
+    if (!(J0 > 0)) throw Error("CONTINUE contact: degenerate slave cell (zero reference length)");
+    const double W = rule.w[i] * J0;
+    const Eigen::Vector2d L(0.5 * (1 - xi), 0.5 * (1 + xi));
+    const double lambda = L.dot(slave.lagsC);
+
+    ContactPointState st;
+    st.xi = xi;
+    st.weight = W;
+    st.point = slave.current.topRows(ns).transpose() * sh.N.head(ns);
+    st.pressure = lambda;
+
+    const MasterProjection mp = projectOnMaster(st.point, masters, options.projection);
+    NodeGap ng;
+    if (mp.paired()) {
+      ng = linearizeGap(st.point, masters[mp.segment], mp.projection);
+      st.gap = ng.gap;
+      st.masterSegment = mp.segment;
+      st.masterXi = mp.projection.xi;
+    }
+    st.augmented = lambda + rho * st.gap;
+    st.status = !mp.paired() ? PointStatus::Unpaired
+                             : (st.augmented < 0 ? PointStatus::Contact : PointStatus::Separated);
+    out.points.push_back(st);
+
+    if (st.status != PointStatus::Contact) {
+      // -(lambda/rho) dlambda
+      out.residual.segment<2>(lo) -= W * lambda / rho * L;
+      out.tangent.block<2, 2>(lo, lo) -= W / rho * L * L.transpose();
+      continue;
+    }
+    // Map of the gap's DOFs q = (x_s, master nodes) to cell DOFs: x_s = sum Ns_a x_a.
+    const int nq = static_cast<int>(ng.gradient.size());
+    const int mo = out.masterOffsets[mp.segment];
+    auto scatter = [&](int p, auto&& f) {
+      if (p < 2) {
+        for (int a = 0; a < ns; ++a) f(2 * a + p, sh.N(a));
+      } else {
+        f(mo + p - 2, 1.0);
+      }
+    };
+    const double g = st.gap, aug = st.augmented;
+    for (int p = 0; p < nq; ++p) {
+      scatter(p, [&](int I, double wI) {
+        out.residual(I) += W * aug * wI * ng.gradient(p);
+        for (int v = 0; v < 2; ++v) {
+          out.tangent(I, lo + v) += W * wI * L(v) * ng.gradient(p);
+          out.tangent(lo + v, I) += W * wI * L(v) * ng.gradient(p);
+        }
+        for (int r = 0; r < nq; ++r) {
+          const double k = W * (aug * ng.hessian(p, r) + rho * ng.gradient(p) * ng.gradient(r));
+          scatter(r, [&](int Jd, double wJ) { out.tangent(I, Jd) += wI * wJ * k; });
+        }
+      });
+    }
+    out.residual.segment<2>(lo) += W * g * L;
+  }
+}
+
+}  // namespace aster::contact

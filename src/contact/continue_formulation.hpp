@@ -1,0 +1,98 @@
+// CONTINUE (mortar-like, Gauss-point) frictionless contact, code_aster
+// FORMULATION='CONTINUE', ALGO_RESO_CONT='NEWTON', ALGO_RESO_GEOM='NEWTON':
+// augmented Lagrangian solved by a generalized (semi-smooth) Newton method,
+// with the pairing re-done at every call (geometric Newton).
+//
+// Unknowns of one slave cell (SEG2 or SEG3): its node displacements, the
+// master nodes' displacements, and LAGS_C at its two VERTEX nodes (nodes 1, 2;
+// a SEG3's middle node carries none). At a slave point xi:
+//   lambda = L1(xi) LAGS_C_1 + L2(xi) LAGS_C_2,  L = ((1-xi)/2, (1+xi)/2),
+// the normal traction on the slave per unit REFERENCE length (<= 0 in
+// compression, 0 when separated; at convergence lambda = (Pi.N).n), and g the
+// gap of x_s(xi) against the master (projection.hpp, gap.hpp; g > 0 separated).
+// Contact terms are integrated on the slave in the REFERENCE configuration,
+// dGamma_0 = |dX/dxi| dxi, by Gauss points (or at the nodes).
+//
+// Augmented multiplier lambda + rho g (rho = COEF_CONT). The energy-like
+// function of the augmented Lagrangian, for lambda <= 0 and g >= 0, is
+//   contact   (lambda + rho g < 0):  lambda g + rho g^2 / 2
+//   separated (lambda + rho g >= 0): -lambda^2 / (2 rho)
+// (continuous, C1 across the switch), whose variation gives the terms
+//   contact:   (lambda + rho g) dg  +  g dlambda
+//   separated: -(lambda / rho) dlambda
+// i.e. W_c = int lambda dg dGamma_0 at the solution (lambda is the normal
+// traction on the slave side), and g = 0 / lambda = 0 as the constraint
+// equations. Note: the criterion is lambda + rho g < 0 (not lambda - rho g),
+// the one consistent with lambda <= 0 in compression and g > 0 when separated:
+// a penetrating point (g < 0) with lambda = 0 must switch to contact.
+// The tangent is the exact derivative of the residual for frozen statuses,
+// including the projection and master curvature terms (gap.hpp), hence
+// symmetric. A point whose projection falls outside every master segment is
+// unpaired and treated as separated (its lambda is driven to 0).
+//
+// Residual and tangent are the contributions to ADD to the global residual
+// R = F_int - F_ext and to its Jacobian. Cell DOF layout:
+//   [slave node 1 x, y, node 2 x, y (, node 3 x, y)]
+//   [master segment 0 nodes x, y ...][master segment 1 ...] ...
+//   [LAGS_C node 1, LAGS_C node 2]
+// (derivatives w.r.t. displacements = w.r.t. current coordinates).
+#pragma once
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "contact/projection.hpp"
+#include "contact/segment.hpp"
+
+namespace aster::contact {
+
+enum class ContactIntegration {
+  Gauss,  // Gauss-Legendre with ContinueOptions::gaussPoints points
+  Nodes,  // at the slave nodes: trapezoid (SEG2), Simpson (SEG3)
+};
+
+struct ContinueOptions {
+  double rho = 100;  // COEF_CONT
+  ContactIntegration integration = ContactIntegration::Gauss;
+  int gaussPoints = 3;
+  ProjectionOptions projection;
+};
+
+struct SlaveCell {
+  fem::CellType type = fem::CellType::SEG2;
+  SegmentNodes reference = SegmentNodes::Zero();  // node coordinates before deformation
+  SegmentNodes current = SegmentNodes::Zero();    // reference + displacement
+  Eigen::Vector2d lagsC = Eigen::Vector2d::Zero();  // at vertex nodes 1 and 2
+};
+
+enum class PointStatus { Contact, Separated, Unpaired };
+const char* pointStatusName(PointStatus s);
+
+// What happened at one integration point (for output and diagnostics).
+struct ContactPointState {
+  double xi = 0;                       // on the slave cell
+  double weight = 0;                   // quadrature weight * |dX/dxi|
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();  // current position
+  PointStatus status = PointStatus::Separated;
+  double gap = 0;                      // 0 when unpaired
+  double pressure = 0;                 // interpolated LAGS_C
+  double augmented = 0;                // pressure + rho * gap
+  int masterSegment = -1;
+  double masterXi = 0;
+};
+
+struct ContinueCellTerms {
+  Eigen::VectorXd residual;
+  Eigen::MatrixXd tangent;
+  std::vector<ContactPointState> points;
+  std::vector<int> masterOffsets;  // first DOF of each master segment
+  int lagrangeOffset = 0;          // first LAGS_C DOF
+  int size() const { return static_cast<int>(residual.size()); }
+};
+
+// Residual, tangent and point data of one slave cell against the master
+// segments (current coordinates). `out` is resized only when needed.
+void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& masters, const ContinueOptions& options,
+                       ContinueCellTerms& out);
+
+}  // namespace aster::contact

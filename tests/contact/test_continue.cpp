@@ -1,0 +1,240 @@
+// CONTINUE contact terms of one slave cell: the tangent against central finite
+// differences of the residual (all DOFs: slave, curved SEG3 masters, LAGS_C)
+// on random states mixing contact and separated points; hand cases (flat
+// master, separated cell, slave lying on a curved master).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "contact/continue_formulation.hpp"
+#include "core/error.hpp"
+
+using namespace aster::contact;
+using aster::fem::CellType;
+using Eigen::Vector2d;
+
+namespace {
+
+double parabola(double X) { return -0.05 * (X - 0.5) * (X - 0.5); }
+
+// Cell DOFs <-> (slave current coordinates, master coordinates, LAGS_C).
+Eigen::VectorXd pack(const SlaveCell& s, const std::vector<Segment>& masters) {
+  std::vector<double> v;
+  const int ns = s.type == CellType::SEG3 ? 3 : 2;
+  for (int a = 0; a < ns; ++a) v.push_back(s.current(a, 0)), v.push_back(s.current(a, 1));
+  for (const auto& m : masters)
+    for (int a = 0; a < m.nodes(); ++a) v.push_back(m.x(a, 0)), v.push_back(m.x(a, 1));
+  v.push_back(s.lagsC(0));
+  v.push_back(s.lagsC(1));
+  return Eigen::Map<Eigen::VectorXd>(v.data(), v.size());
+}
+
+void unpack(const Eigen::VectorXd& q, SlaveCell& s, std::vector<Segment>& masters) {
+  int k = 0;
+  const int ns = s.type == CellType::SEG3 ? 3 : 2;
+  for (int a = 0; a < ns; ++a) s.current(a, 0) = q(k++), s.current(a, 1) = q(k++);
+  for (auto& m : masters)
+    for (int a = 0; a < m.nodes(); ++a) m.x(a, 0) = q(k++), m.x(a, 1) = q(k++);
+  s.lagsC(0) = q(k++);
+  s.lagsC(1) = q(k++);
+}
+
+std::vector<PointStatus> statuses(const ContinueCellTerms& t) {
+  std::vector<PointStatus> s;
+  for (const auto& p : t.points) s.push_back(p.status);
+  return s;
+}
+
+// Returns false (state not usable) when a status flips under perturbation.
+bool checkTangent(SlaveCell s, std::vector<Segment> masters, const ContinueOptions& o) {
+  ContinueCellTerms t0, tp, tm;
+  continueCellTerms(s, masters, o, t0);
+  const Eigen::VectorXd q = pack(s, masters);
+  EXPECT_EQ(q.size(), t0.size());
+  const double h = 1e-7;
+  Eigen::MatrixXd fd(q.size(), q.size());
+  for (int j = 0; j < q.size(); ++j) {
+    Eigen::VectorXd qp = q, qm = q;
+    qp(j) += h;
+    qm(j) -= h;
+    SlaveCell sp = s, sm = s;
+    std::vector<Segment> mp = masters, mm = masters;
+    unpack(qp, sp, mp);
+    unpack(qm, sm, mm);
+    continueCellTerms(sp, mp, o, tp);
+    continueCellTerms(sm, mm, o, tm);
+    if (statuses(tp) != statuses(t0) || statuses(tm) != statuses(t0)) return false;
+    fd.col(j) = (tp.residual - tm.residual) / (2 * h);
+  }
+  const double scale = std::max(1.0, t0.tangent.norm());
+  EXPECT_LE((t0.tangent - fd).norm(), 1e-6 * scale) << "tangent\n" << t0.tangent << "\nfd\n" << fd;
+  EXPECT_LE((t0.tangent - t0.tangent.transpose()).norm(), 1e-12 * scale);
+  return true;
+}
+
+// A slave cell along y ~ 0 from x0 to x1 (walked left to right: normal -Y).
+SlaveCell slaveAlong(CellType type, double x0, double x1, std::mt19937& gen, double noise) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  SlaveCell s;
+  s.type = type;
+  s.reference.row(0) << x0, 0;
+  s.reference.row(1) << x1, 0;
+  s.reference.row(2) << 0.5 * (x0 + x1), 0;
+  const int ns = type == CellType::SEG3 ? 3 : 2;
+  for (int a = 0; a < ns; ++a) {
+    const double X = s.reference(a, 0) + noise * u(gen);
+    s.current.row(a) << X, parabola(X) + noise * u(gen);
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST(Continue, TangentMatchesFiniteDifferencesOnCurvedMasters) {
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const std::vector<Segment> oneMaster = {Segment::seg3({1.5, -0.05}, {-0.5, -0.05}, {0.5, 0.0})};
+  const std::vector<Segment> twoMasters = {Segment::seg3({1.5, -0.05}, {0.5, 0.0}, {1.0, parabola(1.0)}),
+                                           Segment::seg3({0.5, 0.0}, {-0.5, -0.05}, {0.0, parabola(0.0)})};
+  int checked = 0, mixed = 0, split = 0;
+  for (int k = 0; k < 60; ++k) {
+    const CellType type = k % 2 ? CellType::SEG3 : CellType::SEG2;
+    SlaveCell s = slaveAlong(type, 0.2 + 0.1 * u(gen), 0.8 + 0.1 * u(gen), gen, 0.01);
+    s.lagsC << 0.5 * u(gen) - 0.2, 0.5 * u(gen) - 0.2;
+    std::vector<Segment> masters = k % 3 ? oneMaster : twoMasters;
+    for (auto& m : masters)
+      for (int a = 0; a < m.nodes(); ++a) m.x.row(a) += 0.01 * Eigen::RowVector2d(u(gen), u(gen));
+    ContinueOptions o;
+    o.rho = k % 4 ? 100 : 3;
+    o.gaussPoints = 2 + k % 3;
+    ContinueCellTerms t;
+    continueCellTerms(s, masters, o, t);
+    bool nearSwitch = false;
+    int contact = 0;
+    std::vector<int> segs;
+    for (const auto& p : t.points) {
+      nearSwitch = nearSwitch || std::abs(p.augmented) < 1e-4;
+      contact += p.status == PointStatus::Contact;
+      segs.push_back(p.masterSegment);
+    }
+    if (nearSwitch) continue;
+    SCOPED_TRACE(k);
+    if (!checkTangent(s, masters, o)) continue;
+    ++checked;
+    mixed += contact > 0 && contact < static_cast<int>(t.points.size());
+    split += segs.front() != segs.back();
+  }
+  EXPECT_GE(checked, 40);
+  EXPECT_GE(mixed, 5);  // states with contact and separated points in one cell
+  EXPECT_GE(split, 3);  // cells whose points pair with two different master segments
+}
+
+TEST(Continue, FlatMasterHandCase) {
+  // Master y = 0 walked from (2,0) to (-1,0) (normal +Y); slave SEG2 at y = h,
+  // reference length 2 (a stretched current length 1 must not matter).
+  const std::vector<Segment> masters = {Segment::seg2({2, 0}, {-1, 0})};
+  SlaveCell s;
+  s.type = CellType::SEG2;
+  s.reference.row(0) << 0, -1;
+  s.reference.row(1) << 2, -1;
+  const double h = 0.02;
+  s.current.row(0) << 0, h;
+  s.current.row(1) << 1, h;
+  ContinueOptions o;
+  ContinueCellTerms t;
+  // Separated with lambda = 0: nothing at all.
+  continueCellTerms(s, masters, o, t);
+  ASSERT_EQ(t.points.size(), 3u);
+  for (const auto& p : t.points) {
+    EXPECT_EQ(p.status, PointStatus::Separated);
+    EXPECT_NEAR(p.gap, h, 1e-15);
+  }
+  EXPECT_EQ(t.residual.norm(), 0.0);
+  // On the master (h = 0) with a uniform pressure p < 0: the LAGS_C rows
+  // vanish; the slave nodes get p * L0/2 * n_m each (the master pushes the
+  // slave by -p n_m: R = F_int - F_ext receives +p n_m), the master the opposite.
+  s.current.col(1).setZero();
+  const double p = -0.7;
+  s.lagsC << p, p;
+  continueCellTerms(s, masters, o, t);
+  for (const auto& pt : t.points) {
+    EXPECT_EQ(pt.status, PointStatus::Contact);
+    EXPECT_NEAR(pt.pressure, p, 1e-15);
+  }
+  EXPECT_NEAR(t.residual.segment<2>(t.lagrangeOffset).norm(), 0, 1e-15);
+  EXPECT_NEAR(t.residual(0), 0, 1e-15);
+  EXPECT_NEAR(t.residual(1), p * 1.0, 1e-14);
+  EXPECT_NEAR(t.residual(3), p * 1.0, 1e-14);
+  // Master: x = 0.5 - 1.5 xi, so N1 = (1+x)/3, N2 = (2-x)/3 at the slave points,
+  // spread uniformly over x in [0,1] (x = X/2): the resultant -2p (along +Y)
+  // splits as 2 * mean(N1) = 1 and 2 * mean(N2) = 1 times -p.
+  const int m = t.masterOffsets[0];
+  EXPECT_NEAR(t.residual(m + 1), -p, 1e-14);
+  EXPECT_NEAR(t.residual(m + 3), -p, 1e-14);
+  EXPECT_NEAR(t.residual(m), 0, 1e-15);
+  // Penetrating point with lambda = 0 switches to contact (lambda + rho g < 0).
+  s.lagsC.setZero();
+  s.current.col(1).setConstant(-1e-3);
+  continueCellTerms(s, masters, o, t);
+  for (const auto& pt : t.points) EXPECT_EQ(pt.status, PointStatus::Contact);
+  // Its LAGS_C rows are int g L dGamma_0 = g * L0/2 each.
+  EXPECT_NEAR(t.residual(t.lagrangeOffset), -1e-3, 1e-15);
+}
+
+TEST(Continue, SlaveLyingOnTheCurvedMasterHasZeroGap) {
+  // SSNP150 at the exact solution: BAS (Y = 0) moves by Uy = -0.05 (X-0.5)^2,
+  // Ux = 0, onto the master parabola. A SEG3 slave with its middle node at the
+  // middle X is then exactly a piece of the parabola.
+  const std::vector<Segment> masters = {Segment::seg3({1.5, -0.05}, {-0.5, -0.05}, {0.5, 0.0})};
+  for (CellType type : {CellType::SEG3, CellType::SEG2}) {
+    for (double x0 : {0.0, 0.25, 0.8125}) {
+      const double x1 = x0 + 0.1875;
+      SlaveCell s;
+      s.type = type;
+      s.reference.row(0) << x0, 0;
+      s.reference.row(1) << x1, 0;
+      s.reference.row(2) << 0.5 * (x0 + x1), 0;
+      for (int a = 0; a < 3; ++a) s.current.row(a) << s.reference(a, 0), parabola(s.reference(a, 0));
+      s.lagsC << -0.3, -0.2;
+      for (ContactIntegration integ : {ContactIntegration::Gauss, ContactIntegration::Nodes}) {
+        ContinueOptions o;
+        o.integration = integ;
+        ContinueCellTerms t;
+        continueCellTerms(s, masters, o, t);
+        for (const auto& p : t.points) {
+          if (type == CellType::SEG3) EXPECT_NEAR(p.gap, 0, 1e-15);
+          else if (std::abs(p.xi) == 1.0) EXPECT_NEAR(p.gap, 0, 1e-15);  // SEG2: only its nodes are on it
+          EXPECT_EQ(p.status, PointStatus::Contact);
+        }
+        if (type == CellType::SEG3) EXPECT_NEAR(t.residual.segment<2>(t.lagrangeOffset).norm(), 0, 1e-15);
+        // Newton-Cotes on a SEG2 uses the nodes: zero gap there too.
+        if (type == CellType::SEG2 && integ == ContactIntegration::Nodes)
+          EXPECT_NEAR(t.residual.segment<2>(t.lagrangeOffset).norm(), 0, 1e-15);
+      }
+    }
+  }
+}
+
+TEST(Continue, UnpairedPointsAreSeparatedAndBadInputThrows) {
+  const std::vector<Segment> masters = {Segment::seg2({1, 0}, {0, 0})};
+  SlaveCell s;
+  s.type = CellType::SEG2;
+  s.reference.row(0) << 5, 0;
+  s.reference.row(1) << 6, 0;
+  s.current = s.reference;
+  s.lagsC << -1, -1;
+  ContinueOptions o;
+  ContinueCellTerms t;
+  continueCellTerms(s, masters, o, t);
+  for (const auto& p : t.points) EXPECT_EQ(p.status, PointStatus::Unpaired);
+  // -(lambda/rho) int L dGamma_0 = (1/100) * 1/2 per node.
+  EXPECT_NEAR(t.residual(t.lagrangeOffset), 0.005, 1e-15);
+  o.rho = 0;
+  EXPECT_THROW(continueCellTerms(s, masters, o, t), aster::Error);
+  o.rho = 100;
+  o.gaussPoints = 0;
+  EXPECT_THROW(continueCellTerms(s, masters, o, t), aster::Error);
+  o.gaussPoints = 3;
+  EXPECT_THROW(continueCellTerms(s, {}, o, t), aster::Error);
+}
