@@ -20,8 +20,14 @@ class PlaneKernel final : public ElementKernel {
     typename Element::Vector fe;
     typename Element::Matrix Ke;
     element_.internalForce(x, uu, f ? &fe : nullptr, K ? &Ke : nullptr);
-    if (f) Eigen::Map<typename Element::Vector>(f) = fe;
-    if (K) Eigen::Map<typename Element::Matrix>(K) = Ke;
+    if (f) {
+      Eigen::Map<typename Element::Vector> out(f);
+      out = fe;
+    }
+    if (K) {
+      Eigen::Map<typename Element::Matrix> out(K);
+      out = Ke;
+    }
   }
   void stresses(const double* X, const double* u, double* out) const override {
     element_.gaussStresses(Eigen::Map<const typename Element::Coords>(X),
