@@ -16,8 +16,8 @@
 // beyond = |r(end)| / |dx_m/dxi(end)|^2 (tangential distance past the end over
 // the end's Jacobian). Up to ProjectionOptions::outsideTolerance the projection
 // is CLAMPED to the end (xi is then held fixed at +-1 by the linearization);
-// beyond it the point is OUTSIDE the segment (not paired), like code_aster's
-// TOLE_PROJ_EXT.
+// beyond it the point is OUTSIDE the segment (not paired). This plays the role
+// of code_aster's TOLE_PROJ_EXT (default 0.50), here measured in xi units.
 #pragma once
 #include <vector>
 

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <random>
 
+#include <Eigen/LU>
+
 #include "contact/continue_formulation.hpp"
 #include "core/error.hpp"
 
@@ -108,6 +110,7 @@ TEST(Continue, TangentMatchesFiniteDifferencesOnCurvedMasters) {
     ContinueOptions o;
     o.rho = k % 4 ? 100 : 3;
     o.gaussPoints = 2 + k % 3;
+    if (k % 5 == 0) o.integration = ContactIntegration::Nodes;
     ContinueCellTerms t;
     continueCellTerms(s, masters, o, t);
     bool nearSwitch = false;
@@ -237,4 +240,61 @@ TEST(Continue, UnpairedPointsAreSeparatedAndBadInputThrows) {
   EXPECT_THROW(continueCellTerms(s, masters, o, t), aster::Error);
   o.gaussPoints = 3;
   EXPECT_THROW(continueCellTerms(s, {}, o, t), aster::Error);
+}
+
+TEST(Continue, NewtonConvergesQuadraticallyOnASpringLoadedSlave) {
+  // A SEG3 slave whose nodes are tied by springs (stiffness k) to anchors below
+  // the fixed curved master: the springs push it into the master. Unknowns: the
+  // slave coordinates and LAGS_C (master DOFs held fixed). Generalized Newton
+  // with the exact tangent must converge quadratically once statuses settle.
+  const std::vector<Segment> masters = {Segment::seg3({1.5, -0.05}, {-0.5, -0.05}, {0.5, 0.0})};
+  SlaveCell s;
+  s.type = CellType::SEG3;
+  s.reference << 0.1, 0, 0.9, 0, 0.5, 0;
+  Eigen::Matrix<double, 3, 2> anchor;
+  anchor << 0.12, -0.08, 0.93, -0.06, 0.52, -0.05;
+  s.current << 0.1, 0.02, 0.9, 0.02, 0.5, 0.03;  // start separated
+  const double k = 2.0;
+  ContinueOptions o;
+  o.rho = 10;
+  ContinueCellTerms t;
+  std::vector<double> norms;
+  for (int it = 0; it < 30; ++it) {
+    continueCellTerms(s, masters, o, t);
+    // Free DOFs: slave 0..5 and LAGS_C; master columns dropped (fixed).
+    Eigen::VectorXd R(8);
+    Eigen::MatrixXd K(8, 8);
+    const int lo = t.lagrangeOffset;
+    const int idx[8] = {0, 1, 2, 3, 4, 5, lo, lo + 1};
+    for (int i = 0; i < 8; ++i) {
+      R(i) = t.residual(idx[i]);
+      for (int j = 0; j < 8; ++j) K(i, j) = t.tangent(idx[i], idx[j]);
+    }
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 2; ++c) {
+        R(2 * a + c) += k * (s.current(a, c) - anchor(a, c));
+        K(2 * a + c, 2 * a + c) += k;
+      }
+    norms.push_back(R.norm());
+    if (R.norm() < 1e-14) break;
+    const Eigen::VectorXd d = K.fullPivLu().solve(-R);
+    for (int a = 0; a < 3; ++a) s.current.row(a) += d.segment<2>(2 * a).transpose();
+    s.lagsC += d.tail<2>();
+  }
+  ASSERT_LT(norms.back(), 1e-14);
+  ASSERT_LE(norms.size(), 15u);
+  // Quadratic rate on the last steps: r_{i+1} <= C r_i^2 with a moderate C.
+  int quadratic = 0;
+  for (std::size_t i = 1; i + 1 < norms.size(); ++i)
+    if (norms[i] < 1e-2 && norms[i + 1] > 1e-15) {
+      EXPECT_LE(norms[i + 1], 100 * norms[i] * norms[i]) << "step " << i;
+      ++quadratic;
+    }
+  EXPECT_GE(quadratic, 1);
+  // At the solution: in contact, compressive pressure, zero weighted gaps.
+  for (const auto& p : t.points) {
+    EXPECT_EQ(p.status, PointStatus::Contact);
+    EXPECT_LT(p.pressure, 0);
+  }
+  EXPECT_LT(s.lagsC.maxCoeff(), 0);
 }
