@@ -32,6 +32,6 @@ return PROC{ nom = 'IMPR_FONCTION',
   SIMP{ 'GRILLE_X', typ = 'R', val_min = 0.0, fr = "Spacing of the X grid lines." },
   SIMP{ 'GRILLE_Y', typ = 'R', val_min = 0.0, fr = "Spacing of the Y grid lines." },
   SIMP{ 'PENTE', typ = 'TXM', defaut = 'NON', into = {'OUI', 'NON'},
-        fr = "OUI: print each curve's slope between its last two points (convergence rates on log-log axes)." },
+        fr = "OUI: add to each curve's legend the least-squares slope of log y against log x (convergence rates)." },
   SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
 }

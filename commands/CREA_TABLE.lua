@@ -1,0 +1,11 @@
+return OPER{ nom = 'CREA_TABLE', sd_prod = 'table_sdaster', reentrant = 'n',
+  fr = "Creates a table from lists of values, one list per column.",
+  FACT{ 'LISTE', statut = 'o', max = '**', fr = "One column: its name and its values.",
+    regles = { UN_PARMI('LISTE_R', 'LISTE_I', 'LISTE_K') },
+    SIMP{ 'PARA', statut = 'o', typ = 'TXM', fr = "Name of the column." },
+    SIMP{ 'LISTE_R', typ = 'R', max = '**', fr = "Real values." },
+    SIMP{ 'LISTE_I', typ = 'I', max = '**', fr = "Integer values." },
+    SIMP{ 'LISTE_K', typ = 'TXM', max = '**', fr = "Texts." },
+  },
+  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the table." },
+}

@@ -1,0 +1,69 @@
+// Nodal fields made by CREA_CHAMP: a field of functions (NOEU_NEUT_F: one
+// function per node and component, evaluated by OPERATION='EVAL'), and helpers
+// the post-processing operators share (components by name, the support).
+#pragma once
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "commands/result_concepts.hpp"
+#include "core/error.hpp"
+#include "expr/function.hpp"
+#include "lang/keywords.hpp"
+#include "post/check.hpp"
+
+namespace aster::lang {
+
+// A cham_no_sdaster whose values are functions (TYPE_CHAM NOEU_*_F): field.values
+// stays zero; functions[node * components + c] is the function (null: unassigned).
+class FunctionFieldConcept : public NodalFieldConcept {
+ public:
+  using NodalFieldConcept::NodalFieldConcept;
+  std::vector<expr::FunctionPtr> functions;
+};
+
+inline int componentIndex(const mesh::NodalField& f, const std::string& name, const std::string& fieldName) {
+  for (std::size_t i = 0; i < f.components.size(); ++i)
+    if (f.components[i] == name) return static_cast<int>(i);
+  std::string list;
+  for (const auto& c : f.components) list += (list.empty() ? "" : ", ") + c;
+  throw Error("the field " + fieldName + " has no component " + name + " (components: " +
+              (list.empty() ? "none" : list) + ")");
+}
+
+// The nodes a field is defined on: its support, or every node of the mesh.
+inline std::vector<int> supportOf(const NodalFieldConcept& f) {
+  if (!f.support.empty()) return f.support;
+  std::vector<int> all(static_cast<std::size_t>(f.mesh->nodeCount()));
+  for (int i = 0; i < f.mesh->nodeCount(); ++i) all[static_cast<std::size_t>(i)] = i;
+  return all;
+}
+
+inline bool isFunctionField(const NodalFieldConcept& f) {
+  return dynamic_cast<const FunctionFieldConcept*>(&f) != nullptr;
+}
+
+// The instant an occurrence designates with INST (CRITERE, PRECISION) or
+// NUME_ORDRE; the last one when neither is given.
+inline const ResultInstant& instantOf(const ResultConcept& r, const Keywords& occ) {
+  if (occ.has("NUME_ORDRE")) {
+    const long long n = occ.integer("NUME_ORDRE");
+    std::string list;
+    for (const auto& i : r.instants) {
+      if (i.index == n) return i;
+      list += (list.empty() ? "" : ", ") + std::to_string(i.index);
+    }
+    throw Error("NUME_ORDRE=" + std::to_string(n) + " is not stored in the result (NUME_ORDRE: " +
+                (list.empty() ? std::string("none") : list) + ")");
+  }
+  if (!occ.has("INST")) return r.last();
+  const double t = occ.real("INST");
+  const double precision = occ.real("PRECISION", 1e-6);
+  if (occ.text("CRITERE", "RELATIF") == "ABSOLU") {
+    for (const auto& i : r.instants)
+      if (std::abs(i.time - t) <= precision) return i;
+  }
+  return r.at(t, precision);
+}
+
+}  // namespace aster::lang

@@ -1,0 +1,219 @@
+// IMPR_FONCTION: curves (functions, or explicit abscissas and ordinates) as
+// columns of values (TABLEAU), or plotted to PNG / SVG by gnuplot, run as a
+// process on a generated script and data files kept in the output folder.
+// PENTE='OUI' adds each curve's least-squares slope of log y against log x to its
+// legend (convergence rates).
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "commands/function_concepts.hpp"
+#include "core/error.hpp"
+#include "core/messages.hpp"
+#include "expr/tabulated.hpp"
+#include "lang/operators.hpp"
+
+extern char** environ;
+
+namespace aster::lang {
+namespace {
+
+struct Curve {
+  std::vector<double> x, y;
+  std::string legend;
+  int style = -1, colour = -1, marker = -1;
+};
+
+Curve curveOf(const Keywords& occ, Session& session) {
+  Curve c;
+  if (occ.has("FONCTION")) {
+    const auto fc = occ.conceptPtr("FONCTION");
+    const auto f = functionOf(fc);
+    if (f->parameters().size() != 1)
+      throw Error(occ.path + ": " + session.nameOf(*fc) + " takes " + std::to_string(f->parameters().size()) +
+                  " parameters (" + expr::joinNames(f->parameters()) + "); a curve needs a function of one parameter");
+    if (occ.has("LIST_PARA")) {
+      c.x = std::static_pointer_cast<RealListConcept>(occ.conceptPtr("LIST_PARA"))->values;
+      for (double x : c.x) c.y.push_back(f->evaluate(&x));
+    } else if (auto t = std::dynamic_pointer_cast<const expr::Tabulated>(f)) {
+      c.x = t->abscissas();
+      c.y = t->ordinates();
+    } else {
+      throw Error(occ.path + ": " + session.nameOf(*fc) + " is a formula: give LIST_PARA, the abscissas to evaluate it at");
+    }
+    c.legend = occ.text("LEGENDE", session.nameOf(*fc));
+  } else {
+    c.x = occ.reals("ABSCISSE");
+    c.y = occ.reals("ORDONNEE");
+    if (c.x.size() != c.y.size())
+      throw Error(occ.path + ": ABSCISSE has " + std::to_string(c.x.size()) + " values, ORDONNEE " +
+                  std::to_string(c.y.size()));
+    c.legend = occ.text("LEGENDE", "");
+  }
+  if (occ.has("STYLE")) c.style = static_cast<int>(occ.integer("STYLE"));
+  if (occ.has("COULEUR")) c.colour = static_cast<int>(occ.integer("COULEUR"));
+  if (occ.has("MARQUEUR")) c.marker = static_cast<int>(occ.integer("MARQUEUR"));
+  return c;
+}
+
+// Least-squares slope of log y against log x over the points with x > 0, y > 0.
+double logSlope(const Curve& c) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < c.x.size(); ++i) {
+    if (!(c.x[i] > 0 && c.y[i] > 0)) continue;
+    const double lx = std::log(c.x[i]), ly = std::log(c.y[i]);
+    sx += lx; sy += ly; sxx += lx * lx; sxy += lx * ly;
+    ++n;
+  }
+  const double d = n * sxx - sx * sx;
+  if (n < 2 || d == 0) throw Error("PENTE='OUI': curve '" + c.legend + "' has fewer than two points with x > 0 and y > 0");
+  return (n * sxy - sx * sy) / d;
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char ch : s) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+// A file written for the first time in this run is truncated, later writes append.
+std::ofstream openForRun(const std::filesystem::path& p) {
+  static std::set<std::string> seen;
+  const bool first = seen.insert(std::filesystem::absolute(p).string()).second;
+  return std::ofstream(p, first ? std::ios::trunc : std::ios::app);
+}
+
+std::string findProgram(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::stringstream ss(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(ss, dir, ':')) {
+    const auto p = std::filesystem::path(dir.empty() ? "." : dir) / name;
+    if (access(p.c_str(), X_OK) == 0) return p.string();
+  }
+  return "";
+}
+
+void runGnuplot(const std::filesystem::path& script) {
+  const std::string exe = findProgram("gnuplot");
+  if (exe.empty())
+    throw Error("FORMAT='PNG'/'SVG' runs gnuplot, which is not installed (Debian/Ubuntu: apt-get install gnuplot-nox); "
+                "the script is " + script.string());
+  std::string a0 = exe, a1 = script.string();
+  char* argv[] = {a0.data(), a1.data(), nullptr};
+  pid_t pid;
+  if (posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv, environ) != 0)
+    throw Error("cannot start " + exe);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw Error("gnuplot failed on " + script.string() + " (see its messages above)");
+}
+
+ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
+  std::vector<Curve> curves;
+  for (const auto& occ : k.factor("COURBE")) curves.push_back(curveOf(occ, session));
+  const bool pente = k.text("PENTE", "NON") == "OUI";
+  for (auto& c : curves) {
+    if (!pente) continue;
+    const double s = logSlope(c);
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "pente %.3f", s);
+    c.legend = c.legend.empty() ? std::string(buf) : c.legend + " (" + buf + ")";
+    Messages::info("IMPR_FONCTION: " + c.legend);
+  }
+  const std::string format = k.text("FORMAT", "TABLEAU");
+  const int unit = static_cast<int>(k.integer("UNITE"));
+  const auto bound = session.units.find(unit);
+  if (format == "TABLEAU") {
+    std::ostringstream out;
+    if (k.has("TITRE")) out << "# " << k.text("TITRE") << "\n";
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+      out << "# COURBE " << i + 1 << (curves[i].legend.empty() ? "" : ": " + curves[i].legend) << "\n";
+      out << "# " << k.text("LEGENDE_X", "X") << "  " << k.text("LEGENDE_Y", "Y") << "\n";
+      for (std::size_t j = 0; j < curves[i].x.size(); ++j)
+        out << number(curves[i].x[j]) << "  " << number(curves[i].y[j]) << "\n";
+      out << "\n";
+    }
+    const auto path = bound != session.units.end() ? bound->second
+                                                   : session.outputFile("fort." + std::to_string(unit));
+    auto f = openForRun(path);
+    f << out.str();
+    if (!f) throw Error("cannot write " + path.string());
+    if (unit == 8 && bound == session.units.end()) {
+      std::fputs(out.str().c_str(), stdout);
+      std::fflush(stdout);
+    }
+    return nullptr;
+  }
+  const std::string ext = format == "PNG" ? ".png" : ".svg";
+  static int plots = 0;
+  ++plots;
+  const std::filesystem::path image = bound != session.units.end()
+                                          ? bound->second
+                                          : session.outputFile("fonction_" + std::to_string(plots) + ext);
+  const std::string stem = image.stem().string();
+  const auto dir = session.outputFile("");
+  std::ostringstream gp;
+  gp << "set terminal " << (format == "PNG" ? "pngcairo" : "svg") << " size 900,650 noenhanced font 'Sans,11'\n";
+  gp << "set output " << quoted(std::filesystem::absolute(image).string()) << "\n";
+  std::string title = k.text("TITRE", "");
+  if (k.has("SOUS_TITRE")) title += (title.empty() ? "" : "\n") + k.text("SOUS_TITRE");
+  if (!title.empty()) gp << "set title " << quoted(title) << "\n";
+  if (k.has("LEGENDE_X")) gp << "set xlabel " << quoted(k.text("LEGENDE_X")) << "\n";
+  if (k.has("LEGENDE_Y")) gp << "set ylabel " << quoted(k.text("LEGENDE_Y")) << "\n";
+  if (k.text("ECHELLE_X", "LIN") == "LOG") gp << "set logscale x\n";
+  if (k.text("ECHELLE_Y", "LIN") == "LOG") gp << "set logscale y\n";
+  if (k.has("BORNE_X")) gp << "set xrange [" << number(k.reals("BORNE_X")[0]) << ":" << number(k.reals("BORNE_X")[1]) << "]\n";
+  if (k.has("BORNE_Y")) gp << "set yrange [" << number(k.reals("BORNE_Y")[0]) << ":" << number(k.reals("BORNE_Y")[1]) << "]\n";
+  if (k.has("GRILLE_X")) gp << "set xtics " << number(k.real("GRILLE_X")) << "\n";
+  if (k.has("GRILLE_Y")) gp << "set ytics " << number(k.real("GRILLE_Y")) << "\n";
+  gp << "set grid\nset key top right box opaque\n";
+  gp << "plot ";
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const auto data = dir / (stem + "_" + std::to_string(i + 1) + ".dat");
+    std::ofstream d(data);
+    for (std::size_t j = 0; j < curves[i].x.size(); ++j) d << number(curves[i].x[j]) << " " << number(curves[i].y[j]) << "\n";
+    if (!d) throw Error("cannot write " + data.string());
+    const auto& c = curves[i];
+    const bool line = c.style != 0, points = c.marker != 0;
+    gp << (i ? ", \\\n     " : "") << quoted(std::filesystem::absolute(data).string()) << " using 1:2 with "
+       << (line && points ? "linespoints" : line ? "lines" : "points");
+    if (c.colour > 0) gp << " linecolor " << c.colour;
+    if (points && c.marker > 0) gp << " pointtype " << c.marker;
+    if (line && c.style > 1) gp << " dashtype " << c.style;
+    gp << " linewidth 2 title " << quoted(c.legend.empty() ? "courbe " + std::to_string(i + 1) : c.legend);
+  }
+  gp << "\n";
+  const auto script = dir / (stem + ".gp");
+  {
+    std::ofstream s(script);
+    s << gp.str();
+    if (!s) throw Error("cannot write " + script.string());
+  }
+  runGnuplot(script);
+  Messages::info("IMPR_FONCTION: plot written to " + image.string());
+  return nullptr;
+}
+
+RegisterOperator reg("IMPR_FONCTION", imprFonction);
+
+}  // namespace
+}  // namespace aster::lang

@@ -1,0 +1,58 @@
+// RECU_FONCTION: a tabulated function (fonction_sdaster) from two columns of a
+// table, after FILTRE.
+#include <algorithm>
+#include <numeric>
+
+#include "commands/function_concepts.hpp"
+#include "commands/table_concept.hpp"
+#include "core/error.hpp"
+#include "core/messages.hpp"
+#include "expr/tabulated.hpp"
+#include "lang/operators.hpp"
+
+namespace aster::lang {
+namespace {
+
+ConceptPtr recuFonction(const Keywords& k, Session&, ConceptPtr) {
+  const auto& table = k.concept<TableConcept>("TABLE")->table;
+  const std::string px = k.text("PARA_X"), py = k.text("PARA_Y");
+  const auto& cx = table.column(px);
+  const auto& cy = table.column(py);
+  if (cx.type == post::ColumnType::Text || cy.type == post::ColumnType::Text)
+    throw Error("PARA_X and PARA_Y must be numeric columns (" + (cx.type == post::ColumnType::Text ? px : py) + " holds texts)");
+  std::vector<double> x, y;
+  for (int r : table.select(tableFiltersOf(k))) {
+    const auto& vx = cx.values[r];
+    const auto& vy = cy.values[r];
+    if (vx.empty() || vy.empty()) continue;
+    x.push_back(vx.number());
+    y.push_back(vy.number());
+  }
+  if (x.empty()) throw Error("no row of the table (after FILTRE) gives both " + px + " and " + py);
+  if (k.text("VERIF", "CROISSANT") == "NON") {
+    std::vector<std::size_t> order(x.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
+    std::vector<double> xs, ys;
+    for (auto i : order) { xs.push_back(x[i]); ys.push_back(y[i]); }
+    x = xs; y = ys;
+  }
+  expr::TabulatedOptions opt;
+  const auto interp = k.texts("INTERPOL");
+  opt.abscissa = expr::interpolationFromName(interp.at(0));
+  opt.ordinate = expr::interpolationFromName(interp.size() > 1 ? interp[1] : interp[0]);
+  opt.left = expr::extensionFromName(k.text("PROL_GAUCHE", "EXCLU"));
+  opt.right = expr::extensionFromName(k.text("PROL_DROITE", "EXCLU"));
+  auto f = std::make_shared<expr::Tabulated>(k.text("NOM_PARA", px), x, y, opt);
+  if (k.integer("INFO") >= 2) {
+    std::string s = "RECU_FONCTION " + px + " -> " + py + ":\n";
+    for (std::size_t i = 0; i < x.size(); ++i) s += "  " + expr::numberText(x[i]) + "  " + expr::numberText(y[i]) + "\n";
+    Messages::info(s);
+  }
+  return std::make_shared<FunctionConcept>("fonction_sdaster", f);
+}
+
+RegisterOperator reg("RECU_FONCTION", recuFonction);
+
+}  // namespace
+}  // namespace aster::lang

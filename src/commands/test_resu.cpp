@@ -1,0 +1,121 @@
+// TEST_RESU: checks values of nodal fields (CHAM_NO) and of results (RESU): one
+// node and component, or TYPE_TEST over the field's support (SOMM_ABS: sum of
+// absolute values, SOMM: sum, MAX / MIN: signed extremes), all components or
+// NOM_CMP. Each check prints its .resu block and counts OK / NOOK.
+#include <algorithm>
+#include <cmath>
+
+#include "commands/check_keywords.hpp"
+#include "commands/field_concepts.hpp"
+#include "core/error.hpp"
+#include "lang/operators.hpp"
+#include "post/check.hpp"
+
+namespace aster::lang {
+namespace {
+
+using What = std::vector<std::pair<std::string, std::string>>;
+
+double reduce(const std::string& test, const mesh::NodalField& f, const std::vector<int>& nodes,
+              const std::vector<int>& comps) {
+  const std::size_t nc = f.components.size();
+  double sum = 0, sumAbs = 0, mx = -HUGE_VAL, mn = HUGE_VAL;
+  for (int n : nodes)
+    for (int c : comps) {
+      const double v = f.values[n * nc + c];
+      sum += v;
+      sumAbs += std::abs(v);
+      mx = std::max(mx, v);
+      mn = std::min(mn, v);
+    }
+  if (nodes.empty() || comps.empty()) throw Error("TYPE_TEST='" + test + "': the field has no value to test");
+  return test == "SOMM_ABS" ? sumAbs : test == "SOMM" ? sum : test == "MAX" ? mx : mn;
+}
+
+// The value an occurrence designates in a field: TYPE_TEST or NOEUD/GROUP_NO + NOM_CMP.
+double fieldValue(const Keywords& occ, const mesh::Mesh& mesh, const mesh::NodalField& f,
+                  const std::vector<int>& support, const std::string& fieldName, What& what) {
+  std::vector<int> nodes = support;
+  if (nodes.empty())
+    for (int n = 0; n < mesh.nodeCount(); ++n) nodes.push_back(n);
+  if (occ.has("TYPE_TEST")) {
+    std::vector<int> comps;
+    if (occ.has("NOM_CMP")) {
+      comps.push_back(componentIndex(f, occ.text("NOM_CMP"), fieldName));
+      what.push_back({"NOM_CMP", occ.text("NOM_CMP")});
+    } else {
+      for (std::size_t c = 0; c < f.components.size(); ++c) comps.push_back(static_cast<int>(c));
+    }
+    what.push_back({"TYPE_TEST", occ.text("TYPE_TEST")});
+    return reduce(occ.text("TYPE_TEST"), f, nodes, comps);
+  }
+  int node = -1;
+  if (occ.has("NOEUD")) {
+    node = mesh.nodeIndex(occ.text("NOEUD"));
+    what.push_back({"NOEUD", occ.text("NOEUD")});
+  } else if (occ.has("GROUP_NO")) {
+    const auto& g = mesh.nodeGroup(occ.text("GROUP_NO"));
+    if (g.size() != 1)
+      throw Error(occ.path + ": GROUP_NO " + occ.text("GROUP_NO") + " holds " + std::to_string(g.size()) +
+                  " nodes; a check needs a group of one node");
+    node = g[0];
+    what.push_back({"GROUP_NO", occ.text("GROUP_NO")});
+  } else {
+    throw Error(occ.path + ": give NOEUD or GROUP_NO with NOM_CMP, or TYPE_TEST");
+  }
+  if (!occ.has("NOM_CMP")) throw Error(occ.path + ": give NOM_CMP with the node");
+  if (std::find(nodes.begin(), nodes.end(), node) == nodes.end())
+    throw Error(occ.path + ": the field " + fieldName + " is not defined at node " + mesh.nodeName(node));
+  what.push_back({"NOM_CMP", occ.text("NOM_CMP")});
+  return f.values[node * f.components.size() + componentIndex(f, occ.text("NOM_CMP"), fieldName)];
+}
+
+void record(Session& session, const Keywords& occ, double value, const What& what) {
+  if (occ.text("VALE_ABS", "NON") == "OUI") value = std::abs(value);
+  recordCheck(session, value, checkSpecOf(occ), what);
+}
+
+ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
+  if (!k.factor("CHAM_ELEM").empty()) throw Error("CHAM_ELEM: fields on cells are not available yet");
+  for (const auto& occ : k.factor("CHAM_NO")) {
+    const auto c = occ.conceptPtr("CHAM_GD");
+    const auto f = std::dynamic_pointer_cast<NodalFieldConcept>(c);
+    if (!f || isFunctionField(*f)) throw Error(occ.path + ": " + session.nameOf(*c) + " is not a field of real nodal values");
+    What what{{"CHAM_NO", session.nameOf(*c)}};
+    const double v = fieldValue(occ, *f->mesh, f->field, f->support, session.nameOf(*c), what);
+    record(session, occ, v, what);
+  }
+  for (const auto& occ : k.factor("RESU")) {
+    const auto r = occ.concept<ResultConcept>("RESULTAT");
+    const ResultInstant& inst = instantOf(*r, occ);
+    What what{{"RESULTAT", session.nameOf(*r)}};
+    if (occ.has("INST")) what.push_back({"INST", post::formatNumber(inst.time)});
+    else what.push_back({"NUME_ORDRE", std::to_string(inst.index)});
+    if (occ.has("PARA")) {
+      const std::string p = occ.text("PARA");
+      double v = 0;
+      if (p == "ITER_GLOB") v = inst.newtonIterations;
+      else if (p == "INST") v = inst.time;
+      else throw Error(occ.path + ": PARA='" + p + "' is not stored; available: ITER_GLOB, INST");
+      what.push_back({"PARA", p});
+      record(session, occ, v, what);
+      continue;
+    }
+    if (occ.has("GROUP_MA") || occ.has("POINT"))
+      throw Error(occ.path + ": fields on cells (GROUP_MA, POINT) are not available yet");
+    const std::string name = occ.text("NOM_CHAM");
+    what.push_back({"NOM_CHAM", name});
+    const auto& model = *r->model;
+    std::vector<int> support;
+    for (int n = 0; n < model.mesh().nodeCount(); ++n)
+      if (model.nodeInModel(n)) support.push_back(n);
+    const double v = fieldValue(occ, model.mesh(), ResultConcept::nodalField(inst, name), support, name, what);
+    record(session, occ, v, what);
+  }
+  return nullptr;
+}
+
+RegisterOperator reg("TEST_RESU", testResu);
+
+}  // namespace
+}  // namespace aster::lang

@@ -1,0 +1,44 @@
+// L2 norms and L2 errors of nodal fields, integrated with the cells' shape
+// functions and Gauss rules (POST_ELEM NORME, POST_ERREUR).
+//   Surface cells (TRIA3..QUAD9): the field is interpolated with the cell's
+//   shape functions, integrated with a rule exact to degree 2p+2 or more.
+//   Edge cells (SEG2, SEG3): either with the cell's shape functions, or (vertex
+//   mode) linearly between the two end nodes only, as the contact pressure
+//   LAGS_C of CONTINUE contact lives on vertices; integrated along the cell's
+//   length in the mesh's (undeformed) geometry.
+// Values are node-major: values[node * componentCount + c].
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace aster::post {
+
+// An exact solution component as a function of (x, y).
+using ExactFunction = std::function<double(double x, double y)>;
+
+struct NodalValues {
+  const std::vector<double>* values = nullptr;
+  int componentCount = 0;
+  std::vector<int> components;  // indices taken into the norm
+  std::vector<double> weights;  // per taken component (empty: all 1): sum w_c u_c^2
+};
+
+enum class EdgeInterpolation { ShapeFunctions, VertexLinear };
+
+struct L2Result {
+  double error = 0;     // ||u_h - u||  (u = 0 when no exact function is given)
+  double exact = 0;     // ||u||
+  double computed = 0;  // ||u_h||
+  double measure = 0;   // area (or length) integrated over
+};
+
+// Over `cells` (surface or edge cells of `mesh`, mixed not allowed), the L2 norms
+// of the field, of the exact solution (one function per taken component, or
+// none: then error == computed) and of their difference.
+L2Result l2Norms(const mesh::Mesh& mesh, const std::vector<int>& cells, const NodalValues& field,
+                 const std::vector<ExactFunction>& exact = {},
+                 EdgeInterpolation edges = EdgeInterpolation::ShapeFunctions);
+
+}  // namespace aster::post
