@@ -16,5 +16,7 @@ return MACRO{ nom = 'CALC_SOLU_MANU', sd_prod = 'solu_manu',
     SIMP{ 'CONTACT', typ = 'TXM', defaut = 'NON', into = {'OUI', 'NON'},
           fr = "OUI: a contact boundary; the normal pressure is given apart from the tangential traction." },
   },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity: 2 prints the derived expressions." },
+  SIMP{ 'MAILLAGE', typ = 'maillage_sdaster',
+        fr = "When given, each BORD with CONTACT='OUI' is a GROUP_MA of it, along which the exact pressure is sampled to check p <= 0 (alarm otherwise)." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {0, 1, 2}, fr = "Verbosity: 0 silences the exact pressure range of contact boundaries." },
 }

@@ -28,10 +28,13 @@ CheckLine compare(double computed, double expected, double tolerance, bool relat
   return line;
 }
 
+// A left-aligned column of 17 characters, always followed by a space.
 std::string column(const std::string& s) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%-17s", s.c_str());
-  return buf;
+  std::string out = buf;
+  if (out.back() != ' ') out += ' ';
+  return out;
 }
 
 }  // namespace
