@@ -1,0 +1,448 @@
+// IMPR_RESU: writes meshes, nodal fields (cham_no_sdaster) and results
+// (evol_noli: every selected instant's fields) as readable text (RESULTAT), MED,
+// GMSH (.msh 2.2 ASCII) or VTK (.vtu, or a .pvd collection for a result).
+// The file is the one bound to UNITE (DEFI_FICHIER, -u N=path), else
+// <output>/<study>.resu.txt|.med|.msh|.vtu|.pvd. Files are written in a private
+// folder beside the target and renamed into place: an interrupted run never
+// leaves a half-written file.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands/function_concepts.hpp"
+#include "commands/mesh_concept.hpp"
+#include "commands/result_concepts.hpp"
+#include "commands/selection.hpp"
+#include "core/error.hpp"
+#include "core/messages.hpp"
+#include "lang/operators.hpp"
+#include "mesh/io/aster_format.hpp"
+#include "mesh/io/gmsh_format.hpp"
+#include "mesh/io/med_format.hpp"
+#include "mesh/io/vtk_format.hpp"
+
+namespace aster::lang {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ------------------------------------------------------------ atomic output
+
+// Runs write(<private folder>/<target file name>) and then renames every file
+// it made into the target's folder, the target itself last (a .pvd names its
+// .vtu files: they are in place before it is). On failure nothing is renamed.
+void writeAtomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw Error("cannot create the folder " + dir.string() + ": " + ec.message());
+  static unsigned counter = 0;
+  const fs::path tmp = dir / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()) + "-" +
+                              std::to_string(++counter));
+  fs::create_directory(tmp, ec);
+  if (ec) throw Error("cannot create the temporary folder " + tmp.string() + ": " + ec.message());
+  try {
+    write(tmp / target.filename());
+    std::vector<fs::path> made;
+    for (const auto& e : fs::directory_iterator(tmp)) made.push_back(e.path());
+    std::sort(made.begin(), made.end(), [&](const fs::path& a, const fs::path& b) {
+      const bool at = a.filename() == target.filename(), bt = b.filename() == target.filename();
+      return at != bt ? bt : a < b;
+    });
+    if (made.empty() || made.back().filename() != target.filename())
+      throw Error("internal error: the writer made no file " + target.filename().string());
+    for (const auto& p : made) {
+      fs::rename(p, dir / p.filename(), ec);
+      if (ec) throw Error("cannot move " + p.string() + " to " + (dir / p.filename()).string() + ": " + ec.message());
+    }
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove_all(tmp, ignored);
+    throw;
+  }
+  fs::remove_all(tmp, ec);
+}
+
+// ------------------------------------------------------------ what to write
+
+// One RESU occurrence, resolved.
+struct Item {
+  ConceptPtr owner;                            // the mesh, field or result named
+  std::shared_ptr<mesh::Mesh> mesh;            // its mesh
+  bool meshOnly = false;                       // MAILLAGE alone
+  bool isResult = false;
+  std::vector<mesh::FieldInstant> instants;    // nodal fields (CHAM_GD: one instant)
+  std::vector<std::vector<const GaussField*>> gauss;  // per instant (results, RESULTAT format)
+  std::vector<int> nodes;                      // RESULTAT format: the nodes to print
+  std::vector<int> cells;                      // RESULTAT format: the cells of Gauss fields (empty: all)
+};
+
+mesh::NodalField keepComponents(const mesh::NodalField& f, const std::vector<std::string>& wanted, int nodeCount,
+                                const std::string& fieldName) {
+  if (wanted.empty()) return f;
+  std::vector<int> index;
+  for (const auto& w : wanted) {
+    auto it = std::find(f.components.begin(), f.components.end(), w);
+    if (it == f.components.end()) {
+      std::string list;
+      for (const auto& c : f.components) list += (list.empty() ? "" : ", ") + c;
+      throw Error("NOM_CMP: the field " + fieldName + " has no component " + w + " (components: " + list + ")");
+    }
+    index.push_back(static_cast<int>(it - f.components.begin()));
+  }
+  mesh::NodalField out;
+  out.name = f.name;
+  const std::size_t nc = f.components.size();
+  for (int i : index) out.components.push_back(f.components[i]);
+  out.values.reserve(static_cast<std::size_t>(nodeCount) * index.size());
+  for (int n = 0; n < nodeCount; ++n)
+    for (int i : index) out.values.push_back(f.values[static_cast<std::size_t>(n) * nc + i]);
+  return out;
+}
+
+std::vector<const ResultInstant*> selectInstants(const ResultConcept& r, const Keywords& occ) {
+  std::vector<const ResultInstant*> out;
+  if (occ.has("NUME_ORDRE")) {
+    for (long long n : [&] {
+           std::vector<long long> v;
+           for (const auto& x : occ.values("NUME_ORDRE")) v.push_back(x.integer);
+           return v;
+         }()) {
+      const ResultInstant* found = nullptr;
+      std::string list;
+      for (const auto& i : r.instants) {
+        if (i.index == n) found = &i;
+        list += (list.empty() ? "" : ", ") + std::to_string(i.index);
+      }
+      if (!found)
+        throw Error("NUME_ORDRE=" + std::to_string(n) + " is not stored in the result (NUME_ORDRE: " +
+                    (list.empty() ? std::string("none") : list) + ")");
+      out.push_back(found);
+    }
+    return out;
+  }
+  std::vector<double> times;
+  if (occ.has("INST")) times = occ.reals("INST");
+  if (occ.has("LIST_INST")) times = occ.concept<RealListConcept>("LIST_INST")->values;
+  if (!occ.has("INST") && !occ.has("LIST_INST")) {
+    for (const auto& i : r.instants) out.push_back(&i);
+    if (out.empty()) throw Error("RESULTAT: the result holds no instant");
+    return out;
+  }
+  const double precision = occ.real("PRECISION", 1e-6);
+  const bool absolute = occ.text("CRITERE", "RELATIF") == "ABSOLU";
+  for (double t : times) {
+    const ResultInstant* found = nullptr;
+    if (absolute) {
+      for (const auto& i : r.instants)
+        if (!found && std::fabs(i.time - t) <= precision) found = &i;
+    }
+    out.push_back(found ? found : &r.at(t, precision));
+  }
+  return out;
+}
+
+Item resolve(const Keywords& occ, bool textFormat) {
+  Item item;
+  const std::vector<std::string> cmps = occ.texts("NOM_CMP");
+  std::shared_ptr<mesh::Mesh> given;
+  if (occ.has("MAILLAGE")) {
+    item.owner = occ.conceptPtr("MAILLAGE");
+    given = std::static_pointer_cast<MeshConcept>(item.owner)->mesh;
+    item.mesh = given;
+  }
+  if (occ.has("CHAM_GD")) {
+    auto f = occ.concept<NodalFieldConcept>("CHAM_GD");
+    if (!f) throw Error("CHAM_GD: only nodal fields (cham_no_sdaster) can be written");
+    item.owner = f;
+    item.mesh = f->mesh;
+    mesh::FieldInstant fi;
+    fi.fields.push_back(keepComponents(f->field, cmps, f->mesh->nodeCount(), f->field.name));
+    item.instants.push_back(std::move(fi));
+    item.gauss.emplace_back();
+    item.nodes = f->support;
+  } else if (occ.has("RESULTAT")) {
+    auto r = occ.concept<ResultConcept>("RESULTAT");
+    item.owner = r;
+    item.isResult = true;
+    item.mesh = r->model->meshPtr();
+    const std::vector<std::string> names = occ.texts("NOM_CHAM");
+    for (const ResultInstant* ri : selectInstants(*r, occ)) {
+      mesh::FieldInstant fi;
+      fi.index = ri->index;
+      fi.time = ri->time;
+      std::vector<const GaussField*> gauss;
+      if (names.empty()) {
+        for (const auto& f : ri->nodal) fi.fields.push_back(keepComponents(f, cmps, item.mesh->nodeCount(), f.name));
+        for (const auto& g : ri->gauss) gauss.push_back(&g);
+      } else {
+        for (const auto& name : names) {
+          const GaussField* g = nullptr;
+          for (const auto& x : ri->gauss)
+            if (x.name == name) g = &x;
+          if (g) {
+            if (!textFormat)
+              throw Error("NOM_CHAM='" + name +
+                          "' is a field at Gauss points; aster-lite writes it in FORMAT='RESULTAT' only "
+                          "(MED, GMSH and VTK take nodal fields)");
+            gauss.push_back(g);
+            continue;
+          }
+          const auto& f = ResultConcept::nodalField(*ri, name);
+          fi.fields.push_back(keepComponents(f, cmps, item.mesh->nodeCount(), f.name));
+        }
+      }
+      item.instants.push_back(std::move(fi));
+      item.gauss.push_back(std::move(gauss));
+    }
+  } else {
+    item.meshOnly = true;
+  }
+  if (given && given != item.mesh)
+    throw Error("MAILLAGE: the mesh given is not the mesh of the " +
+                std::string(occ.has("RESULTAT") ? "result (RESULTAT)" : "field (CHAM_GD)"));
+  // Restrictions (text format): the nodes and cells of TOUT / GROUP_MA / GROUP_NO.
+  if (occ.has("GROUP_MA") || occ.has("GROUP_NO")) {
+    item.nodes = selectNodes(*item.mesh, occ);
+    item.cells = selectCells(*item.mesh, occ);
+  }
+  return item;
+}
+
+// ------------------------------------------------------------ RESULTAT (text)
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "% .8E", v);
+  return buf;
+}
+
+void printNodalField(std::ostream& out, const mesh::Mesh& m, const mesh::NodalField& f, std::vector<int> nodes,
+                     bool vmax, bool vmin) {
+  if (nodes.empty())
+    for (int n = 0; n < m.nodeCount(); ++n) nodes.push_back(n);
+  const std::size_t nc = f.components.size();
+  std::size_t width = 8;
+  for (int n : nodes) width = std::max(width, m.nodeName(n).size());
+  out << " " << std::string("NOEUD") << std::string(width - 5 + 1, ' ');
+  for (const auto& c : f.components) {
+    std::string h = " " + c;  // above the sign column of the numbers
+    h.resize(std::max<std::size_t>(h.size(), 15), ' ');
+    out << " " << h << "  ";
+  }
+  out << "\n";
+  for (int n : nodes) {
+    std::string name = m.nodeName(n);
+    name.resize(width, ' ');
+    out << " " << name << " ";
+    for (std::size_t c = 0; c < nc; ++c) out << " " << number(f.values[static_cast<std::size_t>(n) * nc + c]) << "  ";
+    out << "\n";
+  }
+  for (int which = 0; which < 2; ++which) {
+    if (!(which == 0 ? vmax : vmin) || nodes.empty()) continue;
+    out << " " << (which == 0 ? "VALE_MAX" : "VALE_MIN") << "\n";
+    for (std::size_t c = 0; c < nc; ++c) {
+      int best = nodes.front();
+      for (int n : nodes) {
+        const double v = f.values[static_cast<std::size_t>(n) * nc + c];
+        const double b = f.values[static_cast<std::size_t>(best) * nc + c];
+        if (which == 0 ? v > b : v < b) best = n;
+      }
+      out << "   " << f.components[c] << " " << number(f.values[static_cast<std::size_t>(best) * nc + c])
+          << " at node " << m.nodeName(best) << "\n";
+    }
+  }
+}
+
+void printGaussField(std::ostream& out, const mesh::Mesh& m, const GaussField& g, const std::vector<int>& cells) {
+  std::set<int> keep(cells.begin(), cells.end());
+  const std::size_t nc = g.components.size();
+  out << " MAILLE   POINT    ";
+  for (const auto& c : g.components) {
+    std::string h = " " + c;
+    h.resize(std::max<std::size_t>(h.size(), 15), ' ');
+    out << " " << h << "  ";
+  }
+  out << "\n";
+  for (std::size_t k = 0; k < g.cells.size(); ++k) {
+    if (!keep.empty() && !keep.count(g.cells[k])) continue;
+    const int begin = g.offsets[k], end = g.offsets[k + 1];
+    const int points = nc ? static_cast<int>((end - begin) / static_cast<int>(nc)) : 0;
+    for (int p = 0; p < points; ++p) {
+      std::string name = m.cellName(g.cells[k]);
+      name.resize(std::max<std::size_t>(name.size(), 8), ' ');
+      std::string point = std::to_string(p + 1);
+      point.resize(std::max<std::size_t>(point.size(), 5), ' ');
+      out << " " << name << " " << point << "    ";
+      for (std::size_t c = 0; c < nc; ++c) out << " " << number(g.values[begin + p * nc + c]) << "  ";
+      out << "\n";
+    }
+  }
+}
+
+std::string textOf(const std::vector<Item>& items, const std::vector<Keywords>& occs, Session& session) {
+  std::ostringstream out;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const Item& it = items[k];
+    const bool vmax = occs[k].has("VALE_MAX"), vmin = occs[k].has("VALE_MIN");
+    const std::string name = session.nameOf(*it.owner);
+    if (it.meshOnly) {
+      out << "% MAILLAGE " << name << "\n";
+      mesh::writeAsterMesh(*it.mesh, out);
+      continue;
+    }
+    for (std::size_t i = 0; i < it.instants.size(); ++i) {
+      const auto& fi = it.instants[i];
+      for (const auto& f : fi.fields) {
+        if (it.isResult)
+          out << "\n CHAMP AUX NOEUDS " << f.name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
+              << "  INST " << number(fi.time) << "\n";
+        else
+          out << "\n CHAMP AUX NOEUDS " << name << "\n";
+        printNodalField(out, *it.mesh, f, it.nodes, vmax, vmin);
+      }
+      for (const GaussField* g : it.gauss[i]) {
+        out << "\n CHAMP AUX POINTS DE GAUSS " << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
+            << "  INST " << number(fi.time) << "\n";
+        printGaussField(out, *it.mesh, *g, it.cells);
+      }
+    }
+  }
+  return out.str();
+}
+
+// ------------------------------------------------------------ binary formats
+
+// Every occurrence on one mesh; fields merged per instant (NUME_ORDRE, INST).
+struct Merged {
+  std::shared_ptr<mesh::Mesh> mesh;
+  ConceptPtr meshConcept;
+  std::vector<mesh::FieldInstant> instants;
+  bool hasResult = false;
+};
+
+Merged merge(const std::vector<Item>& items, const std::string& format, Session& session) {
+  Merged m;
+  for (const Item& it : items) {
+    if (!m.mesh) m.mesh = it.mesh;
+    if (m.mesh != it.mesh)
+      throw Error("RESU: FORMAT='" + format + "' writes one mesh per file, the occurrences of RESU are on different "
+                  "meshes (call IMPR_RESU once per mesh, with different units)");
+    if (it.meshOnly || (!m.meshConcept && std::dynamic_pointer_cast<MeshConcept>(it.owner)))
+      m.meshConcept = it.owner;
+    m.hasResult = m.hasResult || it.isResult;
+    for (const auto& fi : it.instants) {
+      mesh::FieldInstant* into = nullptr;
+      for (auto& x : m.instants)
+        if (x.index == fi.index && x.time == fi.time) into = &x;
+      if (!into) {
+        m.instants.push_back({fi.index, fi.time, {}});
+        into = &m.instants.back();
+      }
+      for (auto f : fi.fields) {
+        if (!it.isResult) f.name = session.nameOf(*it.owner);  // a CHAM_GD is known by its concept's name
+        for (const auto& other : into->fields)
+          if (other.name == f.name) {
+            f.name = session.nameOf(*it.owner) + "_" + f.name;
+            break;
+          }
+        into->fields.push_back(std::move(f));
+      }
+    }
+  }
+  std::sort(m.instants.begin(), m.instants.end(),
+            [](const mesh::FieldInstant& a, const mesh::FieldInstant& b) { return a.time < b.time; });
+  return m;
+}
+
+std::string medMeshName(const Merged& m, Session& session) {
+  if (!m.meshConcept) return "MAIL";
+  const std::string name = session.nameOf(*m.meshConcept);
+  return name.find('@') == std::string::npos && !name.empty() ? name : "MAIL";
+}
+
+// ------------------------------------------------------------ operator
+
+ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
+  const std::string format = k.text("FORMAT");
+  const int unit = static_cast<int>(k.integer("UNITE"));
+  const bool text = format == "RESULTAT";
+  const auto& occs = k.factor("RESU");
+  std::vector<Item> items;
+  for (std::size_t i = 0; i < occs.size(); ++i) {
+    try {
+      items.push_back(resolve(occs[i], text));
+    } catch (const Error& e) {
+      throw Error((occs.size() > 1 ? "RESU[" + std::to_string(i + 1) + "]: " : std::string("RESU: ")) + e.what());
+    }
+    if (!text && (occs[i].has("GROUP_MA") || occs[i].has("GROUP_NO")))
+      Messages::alarm("IMPR_RESU", "GROUP_MA / GROUP_NO restrict FORMAT='RESULTAT' only; FORMAT='" + format +
+                                       "' writes the whole mesh");
+  }
+
+  Merged merged;
+  if (!text) merged = merge(items, format, session);
+  std::string ext = text ? ".resu.txt" : format == "MED" ? ".med" : format == "GMSH" ? ".msh"
+                                        : merged.hasResult ? ".pvd" : ".vtu";
+  const auto bound = session.units.find(unit);
+  const fs::path path = bound != session.units.end() ? bound->second
+                                                      : session.outputFile(session.studyPath.stem().string() + ext);
+
+  // Text files this run has written already (keyed by the session: one per run).
+  static std::map<std::string, const Session*> textWritten;
+  const std::string key = fs::absolute(path).lexically_normal().string();
+  const bool appendText = text && textWritten.count(key) && textWritten[key] == &session && fs::exists(path);
+
+  writeAtomically(path, [&](const fs::path& tmp) {
+    const std::string p = tmp.string();
+    if (text) {
+      std::ofstream out(tmp, std::ios::binary);
+      // Several IMPR_RESU of one run to the same text file follow each other
+      // (code_aster's unit 8); a new run starts the file afresh.
+      if (appendText) {
+        std::ifstream before(path, std::ios::binary);
+        out << before.rdbuf();
+      }
+      out << textOf(items, occs, session);
+      out.close();
+      if (!out) throw Error("cannot write " + p);
+    } else if (format == "MED") {
+      if (merged.instants.empty())
+        mesh::writeMedMesh(*merged.mesh, p, medMeshName(merged, session));
+      else
+        mesh::writeMedResults(*merged.mesh, p, merged.instants, medMeshName(merged, session));
+    } else if (format == "GMSH") {
+      mesh::GmshWriteOptions options;
+      options.version = 2.2;  // the catalogue's promise: version 2 ASCII
+      if (merged.instants.empty())
+        mesh::writeGmshMesh(*merged.mesh, p, options);
+      else
+        mesh::writeGmshResults(*merged.mesh, p, merged.instants, options);
+    } else if (merged.hasResult) {
+      mesh::writePvd(*merged.mesh, p, merged.instants);
+    } else {
+      std::vector<mesh::NodalField> fields;
+      for (const auto& fi : merged.instants)
+        for (const auto& f : fi.fields) fields.push_back(f);
+      mesh::writeVtu(*merged.mesh, p, fields);
+    }
+  });
+  if (text) textWritten[key] = &session;
+  if (k.integer("INFO") >= 1) Messages::info("IMPR_RESU: FORMAT='" + format + "' written to " + path.string());
+  return nullptr;
+}
+
+RegisterOperator reg("IMPR_RESU", imprResu);
+
+}  // namespace
+}  // namespace aster::lang
