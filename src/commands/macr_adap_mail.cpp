@@ -55,9 +55,13 @@ ConceptPtr macrAdapMail(const Keywords& k, Session& session, ConceptPtr) {
   auto refined = std::make_shared<mesh::Mesh>(mesh::refineUniformly(in, cells));
   auto result = std::make_shared<MeshConcept>(refined);
 
-  const Value& np1 = k.value("MAILLAGE_NP1");
-  const std::string newName = np1.text;
-  session.produced.emplace_back(newName, result);
+  // MAILLAGE_NP1=CO('MA1') binds the name, as in code_aster; the new mesh is
+  // also the command's value (MA1 = MACR_ADAP_MAIL{...}).
+  std::string newName = "the new mesh";
+  if (k.has("MAILLAGE_NP1")) {
+    newName = k.value("MAILLAGE_NP1").text;
+    session.produced.emplace_back(newName, result);
+  }
 
   const int info = static_cast<int>(k.integer("INFO"));
   Messages::info("MACR_ADAP_MAIL: uniform refinement of " + session.nameOf(*source) + " (" +
