@@ -51,6 +51,12 @@ PointRule slaveRule(fem::CellType type, const ContinueOptions& o) {
 
 }  // namespace
 
+int multiplierCount(const SlaveCell& slave, const ContinueOptions& options) {
+  return options.multiplierInterpolation == MultiplierInterpolation::Quadratic && slave.type == fem::CellType::SEG3
+             ? 3
+             : 2;
+}
+
 void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& masters, const ContinueOptions& options,
                        ContinueCellTerms& out) {
   checkSegmentType(slave.type, "slave");
@@ -58,6 +64,10 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     throw Error("CONTINUE contact: COEF_CONT must be > 0, got " + std::to_string(options.rho));
   if (masters.empty()) throw Error("CONTINUE contact: no master segment given");
   const int ns = slave.type == fem::CellType::SEG3 ? 3 : 2;
+  const int nm = multiplierCount(slave, options);
+  if (nm == 3 && options.integration == ContactIntegration::Gauss && options.gaussPoints < 3)
+    throw Error("CONTINUE contact: quadratic LAGS_C on a SEG3 slave needs at least 3 Gauss points, got " +
+                std::to_string(options.gaussPoints));
   int n = 2 * ns;
   out.masterOffsets.resize(masters.size());
   for (std::size_t k = 0; k < masters.size(); ++k) {
@@ -66,7 +76,7 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     n += 2 * masters[k].nodes();
   }
   out.lagrangeOffset = n;
-  n += 2;
+  n += nm;
   out.residual.setZero(n);
   out.tangent.setZero(n, n);
   out.points.clear();
@@ -81,8 +91,16 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     const double J0 = dX.norm();
     if (!(J0 > 0)) throw Error("CONTINUE contact: degenerate slave cell (zero reference length)");
     const double W = rule.w[i] * J0;
-    const Eigen::Vector2d L(0.5 * (1 - xi), 0.5 * (1 + xi));
-    const double lambda = L.dot(slave.lagsC);
+    // Multiplier shape functions (the Linear ones exactly as before: bit-for-bit).
+    Eigen::Vector3d L;
+    double lambda;
+    if (nm == 3) {
+      L = segmentShape(fem::CellType::SEG3, xi).N;
+      lambda = L.dot(slave.lagsC);
+    } else {
+      L << 0.5 * (1 - xi), 0.5 * (1 + xi), 0;
+      lambda = L.head<2>().dot(slave.lagsC.head<2>());
+    }
 
     ContactPointState st;
     st.xi = xi;
@@ -105,8 +123,10 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
 
     if (st.status != PointStatus::Contact) {
       // -(lambda/rho) dlambda
-      out.residual.segment<2>(lo) -= W * lambda / rho * L;
-      out.tangent.block<2, 2>(lo, lo) -= W / rho * L * L.transpose();
+      for (int v = 0; v < nm; ++v) {
+        out.residual(lo + v) -= W * lambda / rho * L(v);
+        for (int w = 0; w < nm; ++w) out.tangent(lo + v, lo + w) -= W / rho * L(v) * L(w);
+      }
       continue;
     }
     // Map of the gap's DOFs q = (x_s, master nodes) to cell DOFs: x_s = sum Ns_a x_a.
@@ -123,7 +143,7 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     for (int p = 0; p < nq; ++p) {
       scatter(p, [&](int I, double wI) {
         out.residual(I) += W * aug * wI * ng.gradient(p);
-        for (int v = 0; v < 2; ++v) {
+        for (int v = 0; v < nm; ++v) {
           out.tangent(I, lo + v) += W * wI * L(v) * ng.gradient(p);
           out.tangent(lo + v, I) += W * wI * L(v) * ng.gradient(p);
         }
@@ -133,7 +153,7 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
         }
       });
     }
-    out.residual.segment<2>(lo) += W * g * L;
+    for (int v = 0; v < nm; ++v) out.residual(lo + v) += W * g * L(v);
   }
 }
 

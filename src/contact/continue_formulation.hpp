@@ -4,14 +4,28 @@
 // with the pairing re-done at every call (geometric Newton).
 //
 // Unknowns of one slave cell (SEG2 or SEG3): its node displacements, the
-// master nodes' displacements, and LAGS_C at its two VERTEX nodes (nodes 1, 2;
-// a SEG3's middle node carries none). At a slave point xi:
-//   lambda = L1(xi) LAGS_C_1 + L2(xi) LAGS_C_2,  L = ((1-xi)/2, (1+xi)/2),
-// the normal traction on the slave per unit REFERENCE length (<= 0 in
-// compression, 0 when separated; at convergence lambda = (Pi.N).n), and g the
-// gap of x_s(xi) against the master (projection.hpp, gap.hpp; g > 0 separated).
+// master nodes' displacements, and LAGS_C at m = multiplierCount() slave
+// nodes. At a slave point xi, lambda = sum_v L_v(xi) LAGS_C_v is the normal
+// traction on the slave per unit REFERENCE length (<= 0 in compression, 0 when
+// separated; at convergence lambda = (Pi.N).n), and g the gap of x_s(xi)
+// against the master (projection.hpp, gap.hpp; g > 0 separated). The same L_v
+// interpolate the multiplier and its variation dlambda (test function):
+//   Linear (default, any slave; also a SEG2 in Quadratic mode), m = 2:
+//     LAGS_C at the two VERTEX nodes 1, 2 (a SEG3's middle node carries none),
+//     L = ((1-xi)/2, (1+xi)/2);
+//   Quadratic on a SEG3 slave, m = 3: LAGS_C at nodes 1, 2 and the middle
+//     node 3, L = the SEG3 shape functions (xi(xi-1)/2, xi(xi+1)/2, 1-xi^2).
 // Contact terms are integrated on the slave in the REFERENCE configuration,
 // dGamma_0 = |dX/dxi| dxi, by Gauss points (or at the nodes).
+// Quadrature degree (straight reference cell: |dX/dxi| constant; n Gauss
+// points are exact to degree 2n-1, Newton-Cotes at the nodes to degree 1 on a
+// SEG2 (trapezoid) and 3 on a SEG3 (Simpson)): the multiplier block
+// -(1/rho) int L_v L_w is of degree 2 (Linear) or 4 (Quadratic), hence exact
+// with 2 Gauss points (Linear) or 3 (Quadratic, the default count). In
+// Quadratic mode fewer than 3 Gauss points leave that 3x3 block singular (a
+// sum of < 3 rank-one terms), so they are rejected; Nodes (Simpson) lumps it
+// to a diagonal one (weights 1/3, 1/3, 4/3 times |dX/dxi|), not exact but
+// regular. Terms with g or dg are not polynomial in general (curved master).
 //
 // Augmented multiplier lambda + rho g (rho = COEF_CONT). The energy-like
 // function of the augmented Lagrangian, for lambda <= 0 and g >= 0, is
@@ -34,7 +48,7 @@
 // R = F_int - F_ext and to its Jacobian. Cell DOF layout:
 //   [slave node 1 x, y, node 2 x, y (, node 3 x, y)]
 //   [master segment 0 nodes x, y ...][master segment 1 ...] ...
-//   [LAGS_C node 1, LAGS_C node 2]
+//   [LAGS_C node 1, LAGS_C node 2 (, LAGS_C node 3 in Quadratic mode on a SEG3)]
 // (derivatives w.r.t. displacements = w.r.t. current coordinates).
 #pragma once
 #include <vector>
@@ -51,10 +65,17 @@ enum class ContactIntegration {
   Nodes,  // at the slave nodes: trapezoid (SEG2), Simpson (SEG3)
 };
 
+// Interpolation of LAGS_C (and of its variation) on the slave cell.
+enum class MultiplierInterpolation {
+  Linear,     // at the vertex nodes 1, 2 (SEG2 and SEG3 slaves)
+  Quadratic,  // at nodes 1, 2, 3 with the SEG3 shape functions (a SEG2 slave stays Linear)
+};
+
 struct ContinueOptions {
   double rho = 100;  // COEF_CONT
   ContactIntegration integration = ContactIntegration::Gauss;
-  int gaussPoints = 3;
+  int gaussPoints = 3;  // >= 3 required with Quadratic multipliers on a SEG3
+  MultiplierInterpolation multiplierInterpolation = MultiplierInterpolation::Linear;
   ProjectionOptions projection;
 };
 
@@ -62,8 +83,14 @@ struct SlaveCell {
   fem::CellType type = fem::CellType::SEG2;
   SegmentNodes reference = SegmentNodes::Zero();  // node coordinates before deformation
   SegmentNodes current = SegmentNodes::Zero();    // reference + displacement
-  Eigen::Vector2d lagsC = Eigen::Vector2d::Zero();  // at vertex nodes 1 and 2
+  // LAGS_C at slave nodes 1, 2, 3; entry 2 (node 3) is used only when
+  // multiplierCount() == 3, and ignored otherwise.
+  Eigen::Vector3d lagsC = Eigen::Vector3d::Zero();
 };
+
+// Number of LAGS_C unknowns of the cell (the last DOFs of its layout): 3 for a
+// SEG3 slave with Quadratic multipliers, 2 otherwise.
+int multiplierCount(const SlaveCell& slave, const ContinueOptions& options);
 
 enum class PointStatus { Contact, Separated, Unpaired };
 const char* pointStatusName(PointStatus s);
@@ -75,7 +102,7 @@ struct ContactPointState {
   Eigen::Vector2d point = Eigen::Vector2d::Zero();  // current position
   PointStatus status = PointStatus::Separated;
   double gap = 0;                      // 0 when unpaired
-  double pressure = 0;                 // interpolated LAGS_C
+  double pressure = 0;                 // interpolated LAGS_C (lambda)
   double augmented = 0;                // pressure + rho * gap
   int masterSegment = -1;
   double masterXi = 0;
@@ -86,7 +113,7 @@ struct ContinueCellTerms {
   Eigen::MatrixXd tangent;
   std::vector<ContactPointState> points;
   std::vector<int> masterOffsets;  // first DOF of each master segment
-  int lagrangeOffset = 0;          // first LAGS_C DOF
+  int lagrangeOffset = 0;          // first LAGS_C DOF (multiplierCount of them, up to the end)
   int size() const { return static_cast<int>(residual.size()); }
 };
 

@@ -20,26 +20,24 @@ namespace {
 
 double parabola(double X) { return -0.05 * (X - 0.5) * (X - 0.5); }
 
-// Cell DOFs <-> (slave current coordinates, master coordinates, LAGS_C).
-Eigen::VectorXd pack(const SlaveCell& s, const std::vector<Segment>& masters) {
+// Cell DOFs <-> (slave current coordinates, master coordinates, the nm LAGS_C).
+Eigen::VectorXd pack(const SlaveCell& s, const std::vector<Segment>& masters, int nm) {
   std::vector<double> v;
   const int ns = s.type == CellType::SEG3 ? 3 : 2;
   for (int a = 0; a < ns; ++a) v.push_back(s.current(a, 0)), v.push_back(s.current(a, 1));
   for (const auto& m : masters)
     for (int a = 0; a < m.nodes(); ++a) v.push_back(m.x(a, 0)), v.push_back(m.x(a, 1));
-  v.push_back(s.lagsC(0));
-  v.push_back(s.lagsC(1));
+  for (int a = 0; a < nm; ++a) v.push_back(s.lagsC(a));
   return Eigen::Map<Eigen::VectorXd>(v.data(), v.size());
 }
 
-void unpack(const Eigen::VectorXd& q, SlaveCell& s, std::vector<Segment>& masters) {
+void unpack(const Eigen::VectorXd& q, SlaveCell& s, std::vector<Segment>& masters, int nm) {
   int k = 0;
   const int ns = s.type == CellType::SEG3 ? 3 : 2;
   for (int a = 0; a < ns; ++a) s.current(a, 0) = q(k++), s.current(a, 1) = q(k++);
   for (auto& m : masters)
     for (int a = 0; a < m.nodes(); ++a) m.x(a, 0) = q(k++), m.x(a, 1) = q(k++);
-  s.lagsC(0) = q(k++);
-  s.lagsC(1) = q(k++);
+  for (int a = 0; a < nm; ++a) s.lagsC(a) = q(k++);
 }
 
 std::vector<PointStatus> statuses(const ContinueCellTerms& t) {
@@ -52,7 +50,8 @@ std::vector<PointStatus> statuses(const ContinueCellTerms& t) {
 bool checkTangent(SlaveCell s, std::vector<Segment> masters, const ContinueOptions& o) {
   ContinueCellTerms t0, tp, tm;
   continueCellTerms(s, masters, o, t0);
-  const Eigen::VectorXd q = pack(s, masters);
+  const int nm = multiplierCount(s, o);
+  const Eigen::VectorXd q = pack(s, masters, nm);
   EXPECT_EQ(q.size(), t0.size());
   const double h = 1e-7;
   Eigen::MatrixXd fd(q.size(), q.size());
@@ -62,8 +61,8 @@ bool checkTangent(SlaveCell s, std::vector<Segment> masters, const ContinueOptio
     qm(j) -= h;
     SlaveCell sp = s, sm = s;
     std::vector<Segment> mp = masters, mm = masters;
-    unpack(qp, sp, mp);
-    unpack(qm, sm, mm);
+    unpack(qp, sp, mp, nm);
+    unpack(qm, sm, mm, nm);
     continueCellTerms(sp, mp, o, tp);
     continueCellTerms(sm, mm, o, tm);
     if (statuses(tp) != statuses(t0) || statuses(tm) != statuses(t0)) return false;
@@ -103,7 +102,7 @@ TEST(Continue, TangentMatchesFiniteDifferencesOnCurvedMasters) {
   for (int k = 0; k < 60; ++k) {
     const CellType type = k % 2 ? CellType::SEG3 : CellType::SEG2;
     SlaveCell s = slaveAlong(type, 0.2 + 0.1 * u(gen), 0.8 + 0.1 * u(gen), gen, 0.01);
-    s.lagsC << 0.5 * u(gen) - 0.2, 0.5 * u(gen) - 0.2;
+    s.lagsC << 0.5 * u(gen) - 0.2, 0.5 * u(gen) - 0.2, 0;
     std::vector<Segment> masters = k % 3 ? oneMaster : twoMasters;
     for (auto& m : masters)
       for (int a = 0; a < m.nodes(); ++a) m.x.row(a) += 0.01 * Eigen::RowVector2d(u(gen), u(gen));
@@ -159,7 +158,7 @@ TEST(Continue, FlatMasterHandCase) {
   // slave by -p n_m: R = F_int - F_ext receives +p n_m), the master the opposite.
   s.current.col(1).setZero();
   const double p = -0.7;
-  s.lagsC << p, p;
+  s.lagsC << p, p, 0;
   continueCellTerms(s, masters, o, t);
   for (const auto& pt : t.points) {
     EXPECT_EQ(pt.status, PointStatus::Contact);
@@ -199,7 +198,7 @@ TEST(Continue, SlaveLyingOnTheCurvedMasterHasZeroGap) {
       s.reference.row(1) << x1, 0;
       s.reference.row(2) << 0.5 * (x0 + x1), 0;
       for (int a = 0; a < 3; ++a) s.current.row(a) << s.reference(a, 0), parabola(s.reference(a, 0));
-      s.lagsC << -0.3, -0.2;
+      s.lagsC << -0.3, -0.2, 0;
       for (ContactIntegration integ : {ContactIntegration::Gauss, ContactIntegration::Nodes}) {
         ContinueOptions o;
         o.integration = integ;
@@ -228,7 +227,7 @@ TEST(Continue, UnpairedPointsAreSeparatedAndBadInputThrows) {
   s.reference.row(0) << 5, 0;
   s.reference.row(1) << 6, 0;
   s.current = s.reference;
-  s.lagsC << -1, -1;
+  s.lagsC << -1, -1, 0;
   ContinueOptions o;
   ContinueCellTerms t;
   continueCellTerms(s, masters, o, t);
@@ -244,11 +243,13 @@ TEST(Continue, UnpairedPointsAreSeparatedAndBadInputThrows) {
   EXPECT_THROW(continueCellTerms(s, {}, o, t), aster::Error);
 }
 
-TEST(Continue, NewtonConvergesQuadraticallyOnASpringLoadedSlave) {
-  // A SEG3 slave whose nodes are tied by springs (stiffness k) to anchors below
-  // the fixed curved master: the springs push it into the master. Unknowns: the
-  // slave coordinates and LAGS_C (master DOFs held fixed). Generalized Newton
-  // with the exact tangent must converge quadratically once statuses settle.
+namespace {
+
+// A SEG3 slave whose nodes are tied by springs (stiffness k) to anchors below
+// the fixed curved master: the springs push it into the master. Unknowns: the
+// slave coordinates and LAGS_C (master DOFs held fixed). Generalized Newton
+// with the exact tangent must converge quadratically once statuses settle.
+void newtonOnASpringLoadedSlave(MultiplierInterpolation interpolation) {
   const std::vector<Segment> masters = {Segment::seg3({1.5, -0.05}, {-0.5, -0.05}, {0.5, 0.0})};
   SlaveCell s;
   s.type = CellType::SEG3;
@@ -259,18 +260,23 @@ TEST(Continue, NewtonConvergesQuadraticallyOnASpringLoadedSlave) {
   const double k = 2.0;
   ContinueOptions o;
   o.rho = 10;
+  o.multiplierInterpolation = interpolation;
+  const int nm = multiplierCount(s, o);
+  const int nf = 6 + nm;
   ContinueCellTerms t;
   std::vector<double> norms;
   for (int it = 0; it < 30; ++it) {
     continueCellTerms(s, masters, o, t);
     // Free DOFs: slave 0..5 and LAGS_C; master columns dropped (fixed).
-    Eigen::VectorXd R(8);
-    Eigen::MatrixXd K(8, 8);
+    Eigen::VectorXd R(nf);
+    Eigen::MatrixXd K(nf, nf);
     const int lo = t.lagrangeOffset;
-    const int idx[8] = {0, 1, 2, 3, 4, 5, lo, lo + 1};
-    for (int i = 0; i < 8; ++i) {
+    ASSERT_EQ(t.size(), lo + nm);
+    std::vector<int> idx = {0, 1, 2, 3, 4, 5};
+    for (int v = 0; v < nm; ++v) idx.push_back(lo + v);
+    for (int i = 0; i < nf; ++i) {
       R(i) = t.residual(idx[i]);
-      for (int j = 0; j < 8; ++j) K(i, j) = t.tangent(idx[i], idx[j]);
+      for (int j = 0; j < nf; ++j) K(i, j) = t.tangent(idx[i], idx[j]);
     }
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 2; ++c) {
@@ -281,7 +287,7 @@ TEST(Continue, NewtonConvergesQuadraticallyOnASpringLoadedSlave) {
     if (R.norm() < 1e-14) break;
     const Eigen::VectorXd d = K.fullPivLu().solve(-R);
     for (int a = 0; a < 3; ++a) s.current.row(a) += d.segment<2>(2 * a).transpose();
-    s.lagsC += d.tail<2>();
+    s.lagsC.head(nm) += d.tail(nm);
   }
   ASSERT_LT(norms.back(), 1e-14);
   ASSERT_LE(norms.size(), 15u);
@@ -293,10 +299,246 @@ TEST(Continue, NewtonConvergesQuadraticallyOnASpringLoadedSlave) {
       ++quadratic;
     }
   EXPECT_GE(quadratic, 1);
-  // At the solution: in contact, compressive pressure, zero weighted gaps.
-  for (const auto& p : t.points) {
-    EXPECT_EQ(p.status, PointStatus::Contact);
-    EXPECT_LT(p.pressure, 0);
+  if (interpolation == MultiplierInterpolation::Linear) {
+    // At the solution: in contact, compressive pressure, zero weighted gaps.
+    for (const auto& p : t.points) {
+      EXPECT_EQ(p.status, PointStatus::Contact);
+      EXPECT_LT(p.pressure, 0);
+    }
+    EXPECT_LT(s.lagsC.head(nm).maxCoeff(), 0);
+    return;
   }
-  EXPECT_LT(s.lagsC.maxCoeff(), 0);
+  // Quadratic: 3 LAGS_C against 3 Gauss points (an invertible 3x3 matrix of
+  // L_v(xi_i)) decouple the constraint rows into one per point, so the middle
+  // point may, and here does, lift off (the springs press the ends harder):
+  // g = 0 at contact points, lambda = 0 < g at separated ones.
+  int contact = 0, separated = 0;
+  for (const auto& p : t.points) {
+    if (p.status == PointStatus::Contact) {
+      ++contact;
+      EXPECT_NEAR(p.gap, 0, 1e-14);
+      EXPECT_LT(p.pressure, 0);
+    } else {
+      ++separated;
+      EXPECT_EQ(p.status, PointStatus::Separated);
+      EXPECT_NEAR(p.pressure, 0, 1e-14);
+      EXPECT_GT(p.gap, 0);
+    }
+  }
+  EXPECT_EQ(contact, 2);
+  EXPECT_EQ(separated, 1);
+}
+
+}  // namespace
+
+TEST(Continue, NewtonConvergesQuadraticallyOnASpringLoadedSlave) {
+  newtonOnASpringLoadedSlave(MultiplierInterpolation::Linear);
+}
+
+// ------------------------------------------------ quadratic LAGS_C (SEG3 slave)
+
+TEST(ContinueQuadratic, MultiplierCountAndLayout) {
+  SlaveCell s2, s3;
+  s2.type = CellType::SEG2;
+  s3.type = CellType::SEG3;
+  ContinueOptions lin, quad;
+  quad.multiplierInterpolation = MultiplierInterpolation::Quadratic;
+  EXPECT_EQ(lin.multiplierInterpolation, MultiplierInterpolation::Linear);  // the default
+  EXPECT_EQ(multiplierCount(s2, lin), 2);
+  EXPECT_EQ(multiplierCount(s3, lin), 2);
+  EXPECT_EQ(multiplierCount(s2, quad), 2);
+  EXPECT_EQ(multiplierCount(s3, quad), 3);
+  s3.reference << 0, 0, 1, 0, 0.5, 0;
+  s3.current = s3.reference;
+  const std::vector<Segment> masters = {Segment::seg2({1, 0}, {0, 0}), Segment::seg3({2, 0}, {1, 0}, {1.5, 0})};
+  ContinueCellTerms t;
+  continueCellTerms(s3, masters, quad, t);
+  EXPECT_EQ(t.masterOffsets, (std::vector<int>{6, 10}));
+  EXPECT_EQ(t.lagrangeOffset, 16);
+  EXPECT_EQ(t.size(), 19);
+  continueCellTerms(s3, masters, lin, t);
+  EXPECT_EQ(t.lagrangeOffset, 16);
+  EXPECT_EQ(t.size(), 18);
+}
+
+TEST(ContinueQuadratic, Seg2SlaveAndUnusedThirdEntryChangeNothing) {
+  // A SEG2 slave in Quadratic mode is Linear, bit for bit; in Linear mode the
+  // third LAGS_C entry of a SEG3 slave is ignored.
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const std::vector<Segment> masters = {Segment::seg3({1.5, -0.05}, {-0.5, -0.05}, {0.5, 0.0})};
+  for (int k = 0; k < 20; ++k) {
+    const CellType type = k % 2 ? CellType::SEG3 : CellType::SEG2;
+    SlaveCell s = slaveAlong(type, 0.2, 0.8, gen, 0.01);
+    s.lagsC << 0.5 * u(gen) - 0.2, 0.5 * u(gen) - 0.2, 0;
+    ContinueOptions lin;
+    lin.integration = k % 4 < 2 ? ContactIntegration::Gauss : ContactIntegration::Nodes;
+    ContinueOptions quad = lin;
+    quad.multiplierInterpolation = MultiplierInterpolation::Quadratic;
+    ContinueCellTerms a, b;
+    continueCellTerms(s, masters, lin, a);
+    if (type == CellType::SEG2) {
+      continueCellTerms(s, masters, quad, b);
+    } else {
+      s.lagsC(2) = 12.5;  // unused
+      continueCellTerms(s, masters, lin, b);
+    }
+    EXPECT_TRUE(a.residual == b.residual);
+    EXPECT_TRUE(a.tangent == b.tangent);
+  }
+}
+
+TEST(ContinueQuadratic, TangentMatchesFiniteDifferencesOnCurvedMasters) {
+  std::mt19937 gen(17);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const std::vector<Segment> oneMaster = {Segment::seg3({1.5, -0.05}, {-0.5, -0.05}, {0.5, 0.0})};
+  const std::vector<Segment> twoMasters = {Segment::seg3({1.5, -0.05}, {0.5, 0.0}, {1.0, parabola(1.0)}),
+                                           Segment::seg3({0.5, 0.0}, {-0.5, -0.05}, {0.0, parabola(0.0)})};
+  int checked = 0, mixed = 0, split = 0;
+  for (int k = 0; k < 60; ++k) {
+    SlaveCell s = slaveAlong(CellType::SEG3, 0.2 + 0.1 * u(gen), 0.8 + 0.1 * u(gen), gen, 0.01);
+    s.lagsC << 0.5 * u(gen) - 0.2, 0.5 * u(gen) - 0.2, 0.5 * u(gen) - 0.2;
+    std::vector<Segment> masters = k % 3 ? oneMaster : twoMasters;
+    for (auto& m : masters)
+      for (int a = 0; a < m.nodes(); ++a) m.x.row(a) += 0.01 * Eigen::RowVector2d(u(gen), u(gen));
+    ContinueOptions o;
+    o.multiplierInterpolation = MultiplierInterpolation::Quadratic;
+    o.rho = k % 4 ? 100 : 3;
+    o.gaussPoints = 3 + k % 3;
+    if (k % 5 == 0) o.integration = ContactIntegration::Nodes;
+    ContinueCellTerms t;
+    continueCellTerms(s, masters, o, t);
+    ASSERT_EQ(t.size() - t.lagrangeOffset, 3);
+    bool nearSwitch = false;
+    int contact = 0;
+    std::vector<int> segs;
+    for (const auto& p : t.points) {
+      nearSwitch = nearSwitch || std::abs(p.augmented) < 1e-4;
+      contact += p.status == PointStatus::Contact;
+      segs.push_back(p.masterSegment);
+    }
+    if (nearSwitch) continue;
+    SCOPED_TRACE(k);
+    if (!checkTangent(s, masters, o)) continue;
+    ++checked;
+    mixed += contact > 0 && contact < static_cast<int>(t.points.size());
+    split += segs.front() != segs.back();
+  }
+  EXPECT_GE(checked, 40);
+  EXPECT_GE(mixed, 5);  // states with contact and separated points in one cell
+  EXPECT_GE(split, 3);  // cells whose points pair with two different master segments
+}
+
+namespace {
+
+// int_{-1}^{1} N_a N_b dxi for the SEG3 shape functions (nodes 1, 2, 3).
+Eigen::Matrix3d seg3Mass() {
+  Eigen::Matrix3d M;
+  M << 4, -1, 2, -1, 4, 2, 2, 2, 16;
+  return M / 15;
+}
+
+}  // namespace
+
+TEST(ContinueQuadratic, QuadraticPressureOnAFlatMasterIsExact) {
+  // Master y = 0 walked from (2,0) to (-1,0) (normal +Y); SEG3 slave lying on
+  // it, reference length 2 (|dX/dxi| = 1), current x = (1+xi)/2. The pressure
+  // p(xi) = a + b xi + c xi^2 < 0 is given exactly by its three nodal values.
+  const std::vector<Segment> masters = {Segment::seg2({2, 0}, {-1, 0})};
+  SlaveCell s;
+  s.type = CellType::SEG3;
+  s.reference << 0, -1, 2, -1, 1, -1;
+  s.current << 0, 0, 1, 0, 0.5, 0;
+  const double a = -0.8, b = 0.3, c = 0.2;
+  auto p = [&](double xi) { return a + b * xi + c * xi * xi; };
+  s.lagsC << p(-1), p(1), p(0);
+  const Eigen::Vector3d F = seg3Mass() * s.lagsC;  // consistent nodal forces int p N_a
+  for (int ng : {3, 4, 5}) {
+    SCOPED_TRACE(ng);
+    ContinueOptions o;
+    o.multiplierInterpolation = MultiplierInterpolation::Quadratic;
+    o.gaussPoints = ng;
+    ContinueCellTerms t;
+    continueCellTerms(s, masters, o, t);
+    ASSERT_EQ(static_cast<int>(t.points.size()), ng);
+    for (const auto& pt : t.points) {
+      EXPECT_EQ(pt.status, PointStatus::Contact);
+      EXPECT_EQ(pt.gap, 0.0);
+      EXPECT_NEAR(pt.pressure, p(pt.xi), 1e-15);
+    }
+    // The constraint rows int g N_v dGamma_0 vanish, and the force rows are the
+    // consistent nodal forces of p (degree 4: exact with >= 3 Gauss points).
+    const int lo = t.lagrangeOffset;
+    ASSERT_EQ(t.size(), lo + 3);
+    EXPECT_EQ(t.residual.segment<3>(lo).norm(), 0.0);
+    for (int n = 0; n < 3; ++n) {
+      EXPECT_NEAR(t.residual(2 * n), 0, 1e-15);
+      EXPECT_NEAR(t.residual(2 * n + 1), F(n), 1e-15);
+    }
+    // Master: the opposite resultant and moment (int p x dGamma_0, x = (1+xi)/2).
+    const int m = t.masterOffsets[0];
+    EXPECT_NEAR(t.residual(m) + t.residual(m + 2), 0, 1e-15);
+    EXPECT_NEAR(t.residual(m + 1) + t.residual(m + 3), -F.sum(), 1e-14);
+    const double moment = 0.5 * F.sum() + 0.5 * (seg3Mass() * Eigen::Vector3d(-1, 1, 0)).dot(s.lagsC);
+    EXPECT_NEAR(2 * t.residual(m + 1) - t.residual(m + 3), -moment, 1e-14);
+    EXPECT_NEAR(s.current.col(0).dot(t.residual.segment<6>(0)(Eigen::seqN(1, 3, 2))), moment, 1e-14);
+  }
+  // Uniform penetration g: the constraint rows are g int N_v = g (1/3, 1/3, 4/3).
+  s.current.col(1).setConstant(-1e-3);
+  for (ContactIntegration integ : {ContactIntegration::Gauss, ContactIntegration::Nodes}) {
+    ContinueOptions o;
+    o.multiplierInterpolation = MultiplierInterpolation::Quadratic;
+    o.integration = integ;
+    ContinueCellTerms t;
+    continueCellTerms(s, masters, o, t);
+    const Eigen::Vector3d expected = -1e-3 * Eigen::Vector3d(1.0 / 3, 1.0 / 3, 4.0 / 3);
+    EXPECT_NEAR((t.residual.segment<3>(t.lagrangeOffset) - expected).norm(), 0, 1e-16);
+  }
+}
+
+TEST(ContinueQuadratic, SeparatedMultiplierBlockAndGaussPointCount) {
+  // Separated straight SEG3 slave (|dX/dxi| = 1.5): the LAGS_C rows are
+  // -(1/rho) int lambda N_v dGamma_0, i.e. -(1.5/rho) M lagsC with the SEG3
+  // mass M (degree 4: exact with 3 Gauss points and more), diagonal (lumped,
+  // Simpson weights) when integrated at the nodes.
+  const std::vector<Segment> masters = {Segment::seg2({4, 0}, {-1, 0})};
+  SlaveCell s;
+  s.type = CellType::SEG3;
+  s.reference << 0, 0, 3, 0, 1.5, 0;
+  s.current << 0, 0.5, 3, 0.5, 1.5, 0.5;
+  s.lagsC << -0.4, 0.3, -0.7;
+  ContinueOptions o;
+  o.multiplierInterpolation = MultiplierInterpolation::Quadratic;
+  o.rho = 4;
+  const Eigen::Matrix3d exact = -1.5 / o.rho * seg3Mass();
+  ContinueCellTerms t;
+  for (int ng : {3, 4, 6}) {
+    o.gaussPoints = ng;
+    continueCellTerms(s, masters, o, t);
+    for (const auto& pt : t.points) EXPECT_EQ(pt.status, PointStatus::Separated);
+    const int lo = t.lagrangeOffset;
+    EXPECT_NEAR((t.tangent.block<3, 3>(lo, lo) - exact).norm(), 0, 1e-15) << ng;
+    EXPECT_NEAR((t.residual.segment<3>(lo) - exact * s.lagsC).norm(), 0, 1e-15) << ng;
+    EXPECT_EQ(t.residual.head(lo).norm(), 0.0);
+  }
+  o.integration = ContactIntegration::Nodes;
+  continueCellTerms(s, masters, o, t);
+  const Eigen::Matrix3d lumped = -1.5 / o.rho * Eigen::Vector3d(1.0 / 3, 1.0 / 3, 4.0 / 3).asDiagonal().toDenseMatrix();
+  EXPECT_NEAR((t.tangent.block<3, 3>(t.lagrangeOffset, t.lagrangeOffset) - lumped).norm(), 0, 1e-15);
+  // Fewer than 3 Gauss points would make that block singular: rejected.
+  o.integration = ContactIntegration::Gauss;
+  for (int ng : {1, 2}) {
+    o.gaussPoints = ng;
+    EXPECT_THROW(continueCellTerms(s, masters, o, t), aster::Error);
+  }
+  // ... but not in Linear mode, nor for a SEG2 slave in Quadratic mode.
+  o.multiplierInterpolation = MultiplierInterpolation::Linear;
+  EXPECT_NO_THROW(continueCellTerms(s, masters, o, t));
+  o.multiplierInterpolation = MultiplierInterpolation::Quadratic;
+  s.type = CellType::SEG2;
+  EXPECT_NO_THROW(continueCellTerms(s, masters, o, t));
+}
+
+TEST(ContinueQuadratic, NewtonConvergesQuadraticallyOnASpringLoadedSlave) {
+  newtonOnASpringLoadedSlave(MultiplierInterpolation::Quadratic);
 }
