@@ -27,6 +27,8 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
     if (z.has("TOLE_PROJ_EXT")) settings.outsideTolerance = z.real("TOLE_PROJ_EXT");
     if (settings.continueFormulation) {
       settings.rho = z.real("COEF_CONT", settings.rho);
+      if (z.text("INTERPOL_LAGS_C", "LINEAIRE") == "QUADRATIQUE")
+        settings.multipliers = contact::MultiplierInterpolation::Quadratic;
       const std::string integration = z.text("INTEGRATION", "AUTO");
       if (integration == "GAUSS") {
         settings.integration = contact::ContactIntegration::Gauss;

@@ -191,12 +191,15 @@ class ContinueContact final : public ContactBase {
     options_.integration = settings.integration;
     options_.gaussPoints = settings.gaussPoints;
     options_.projection = projection_;
+    options_.multiplierInterpolation = settings.multipliers;
+    const bool quadratic = settings.multipliers == contact::MultiplierInterpolation::Quadratic;
     std::map<int, int> lagsIndex;
     for (std::size_t z = 0; z < zones_.size(); ++z)
       for (int c : zones_[z].slaveCells) {
         const auto n = mesh_.cellNodes(c);
-        SlaveCell sc{c, static_cast<int>(z), {}, {}};
-        for (int v = 0; v < 2; ++v) {
+        SlaveCell sc{c, static_cast<int>(z), 2, {}, {}};
+        if (quadratic && mesh_.cellType(c) == mesh::CellType::SEG3) sc.count = 3;
+        for (int v = 0; v < sc.count; ++v) {
           auto it = lagsIndex.find(n[v]);
           if (it == lagsIndex.end()) {
             it = lagsIndex.emplace(n[v], static_cast<int>(lagsNodes_.size())).first;
@@ -263,7 +266,7 @@ class ContinueContact final : public ContactBase {
         slave.reference.row(a) = position(nodes[a], nullptr).transpose();
         slave.current.row(a) = position(nodes[a], &U).transpose();
       }
-      for (int v = 0; v < 2; ++v) slave.lagsC(v) = U(first_ + sc.lags[v]);
+      for (int v = 0; v < sc.count; ++v) slave.lagsC(v) = U(first_ + sc.lags[v]);
       std::vector<contact::Segment> m;
       for (int s : sc.candidates) m.push_back(segment(zones_[sc.zone].masterCells[s], &U));
       contact::continueCellTerms(slave, m, options_, terms_);
@@ -281,11 +284,18 @@ class ContinueContact final : public ContactBase {
   void saveStatus() override {}
   void restoreStatus() override {}
 
+  // LAGS_C joins DEPL at its nodes; the middle node of a SEG3 slave whose
+  // LAGS_C is linear shows the value of the linear pressure there.
   void extendDisplacement(const Eigen::VectorXd& U, mesh::NodalField& depl) const override {
     const int nc = static_cast<int>(depl.components.size());
     std::vector<double> values(static_cast<std::size_t>(nc + 1) * mesh_.nodeCount(), 0.0);
     for (int n = 0; n < mesh_.nodeCount(); ++n)
       for (int c = 0; c < nc; ++c) values[n * (nc + 1) + c] = depl.values[n * nc + c];
+    for (const auto& sc : cells_) {
+      const auto nodes = mesh_.cellNodes(sc.cell);
+      if (sc.count == 2 && nodes.size() == 3)
+        values[nodes[2] * (nc + 1) + nc] = 0.5 * (U(first_ + sc.lags[0]) + U(first_ + sc.lags[1]));
+    }
     for (std::size_t k = 0; k < lagsNodes_.size(); ++k)
       values[lagsNodes_[k] * (nc + 1) + nc] = U(first_ + static_cast<int>(k));
     depl.components.push_back("LAGS_C");
@@ -296,15 +306,15 @@ class ContinueContact final : public ContactBase {
   struct SlaveCell {
     int cell;
     int zone;
-    int lags[2];
+    int count;    // LAGS_C unknowns of the cell: 2 (vertices) or 3 (quadratic SEG3)
+    int lags[3];  // their indices among this term's unknowns
     std::vector<int> candidates;
   };
   std::vector<int> cellDofs(const SlaveCell& sc) const {
     std::vector<int> dofs;
     appendDofs(sc.cell, dofs);
     for (int s : sc.candidates) appendDofs(zones_[sc.zone].masterCells[s], dofs);
-    dofs.push_back(first_ + sc.lags[0]);
-    dofs.push_back(first_ + sc.lags[1]);
+    for (int v = 0; v < sc.count; ++v) dofs.push_back(first_ + sc.lags[v]);
     return dofs;
   }
   contact::ContinueOptions options_;

@@ -22,6 +22,9 @@ struct ContactSettings {
   double rho = 100.0;                // COEF_CONT
   contact::ContactIntegration integration = contact::ContactIntegration::Gauss;
   int gaussPoints = 3;
+  // LAGS_C at the vertex nodes, linear along a slave cell (code_aster's), or at
+  // every node of a SEG3 slave, quadratic (aster-lite's INTERPOL_LAGS_C='QUADRATIQUE').
+  contact::MultiplierInterpolation multipliers = contact::MultiplierInterpolation::Linear;
   double outsideTolerance = 0.5;  // TOLE_PROJ_EXT, in master xi units
 };
 
