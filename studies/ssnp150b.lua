@@ -114,6 +114,20 @@ IMPR_FONCTION{FORMAT = 'PNG', UNITE = 31, TITRE = 'SSNP150B: contact pressure al
                         {FONCTION = PRES_TAB, LEGENDE = 'exact p = (Pi.N).n'}},
               LEGENDE_X = 'X', LEGENDE_Y = 'p'}
 
+-- The spec's figure 2.1-1: the exact pressure and gap along the contact line,
+-- which show the manufactured solution satisfies the contact conditions
+-- (p < 0 and gap = 0: full contact). The gap is that of the deformed BAS,
+-- (X + UX, UY) at Y = 0, above the master Y = -0.05 (X - 0.5)^2.
+JEU_X = FORMULE{VALE = function(x)
+  local xd, yd = x + UX(x, 0.0), UY(x, 0.0)
+  return yd + 0.05 * (xd - 0.5) ^ 2
+end, NOM_PARA = 'X'}
+JEU_TAB = CALC_FONC_INTERP{FONCTION = JEU_X, LIST_PARA = LX, NOM_PARA = 'X'}
+IMPR_FONCTION{FORMAT = 'PNG', UNITE = 32, TITRE = 'SSNP150: exact pressure and gap along the contact line',
+              COURBE = {{FONCTION = PRES_TAB, LEGENDE = 'pressure p'}, {FONCTION = JEU_TAB, LEGENDE = 'gap'}},
+              LEGENDE_X = 'X', LEGENDE_Y = 'p, gap'}
+TEST_FONCTION{VALEUR = {FONCTION = JEU_X, VALE_PARA = 0.2, VALE_CALC = 0.0, ORDRE_GRANDEUR = 1.0E-2}}
+
 -- The checks of the reference study. The reference code's values differ from
 -- ours on two counts, discussed in docs/verification/ssnp150.md: its MAX of DIFF
 -- is 6.645E-07 (ours 3.016E-07 on the same mesh), and its alpha_p is 2.80 where a
