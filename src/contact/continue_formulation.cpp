@@ -118,7 +118,7 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     }
     st.augmented = lambda + rho * st.gap;
     st.status = !mp.paired() ? PointStatus::Unpaired
-                             : (st.augmented < 0 ? PointStatus::Contact : PointStatus::Separated);
+                             : (st.augmented <= 0 ? PointStatus::Contact : PointStatus::Separated);
     out.points.push_back(st);
 
     if (st.status != PointStatus::Contact) {

@@ -29,8 +29,8 @@
 //
 // Augmented multiplier lambda + rho g (rho = COEF_CONT). The energy-like
 // function of the augmented Lagrangian, for lambda <= 0 and g >= 0, is
-//   contact   (lambda + rho g < 0):  lambda g + rho g^2 / 2
-//   separated (lambda + rho g >= 0): -lambda^2 / (2 rho)
+//   contact   (lambda + rho g <= 0): lambda g + rho g^2 / 2
+//   separated (lambda + rho g > 0):  -lambda^2 / (2 rho)
 // (continuous, C1 across the switch), whose variation gives the terms
 //   contact:   (lambda + rho g) dg  +  g dlambda
 //   separated: -(lambda / rho) dlambda
@@ -38,7 +38,10 @@
 // traction on the slave side), and g = 0 / lambda = 0 as the constraint
 // equations. Note: the criterion is lambda + rho g < 0 (not lambda - rho g),
 // the one consistent with lambda <= 0 in compression and g > 0 when separated:
-// a penetrating point (g < 0) with lambda = 0 must switch to contact.
+// a penetrating point (g < 0) with lambda = 0 must switch to contact. A point
+// exactly touching with lambda = 0 (the start of a study whose slave lies on
+// the master) counts as in contact, as code_aster's CONTACT_INIT='INTERPENETRE':
+// otherwise a body held only by contact would be free at the first iteration.
 // The tangent is the exact derivative of the residual for frozen statuses,
 // including the projection and master curvature terms (gap.hpp), hence
 // symmetric. A point whose projection falls outside every master segment is

@@ -92,13 +92,18 @@ class DiscreteContact final : public ContactBase {
 
   bool update(const Eigen::VectorXd& U) override {
     bool changed = false;
-    for (auto& sn : nodes_) {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      auto& sn = nodes_[i];
       const auto m = masters(zones_[sn.zone], U);
       const auto p = contact::projectOnMaster(position(sn.node, &U), m, projection_);
       changed |= p.segment != sn.segment;
       sn.segment = p.segment;
       sn.projection = p.projection;
+      // As code_aster's CONTACT_INIT='INTERPENETRE': nodes touching or
+      // penetrating at the start are active from the first iteration.
+      if (!started_ && p.paired() && p.projection.gap <= 0) active_[i] = true;
     }
+    started_ = true;
     return changed;
   }
 
@@ -180,6 +185,7 @@ class DiscreteContact final : public ContactBase {
   }
   std::vector<SlaveNode> nodes_;
   std::vector<bool> active_, saved_;
+  bool started_ = false;
 };
 
 // ---------------------------------------------------------------- CONTINUE
