@@ -1,6 +1,9 @@
 #include "model/space_function.hpp"
 
+#include <cmath>
+
 #include "core/error.hpp"
+#include "expr/expression.hpp"
 
 namespace aster::model {
 
@@ -18,6 +21,17 @@ SpaceFunction::SpaceFunction(expr::FunctionPtr f) : f_(std::move(f)) {
     else throw Error("a load function may depend on X, Y, Z and INST only; its parameter '" + p +
                      "' is none of them");
   }
+}
+
+double SpaceFunction::checked(double x, double y, double z, double t) const {
+  if (!f_) return constant_;
+  const double all[4] = {x, y, z, t};
+  double args[4];
+  for (int i = 0; i < count_; ++i) args[i] = all[slot_[i]];
+  if (const auto* e = dynamic_cast<const expr::Expression*>(f_.get())) return e->evaluateChecked(args);
+  const double v = f_->evaluate(args);
+  if (!std::isfinite(v)) throw Error("the function returns " + expr::numberText(v));
+  return v;
 }
 
 bool SpaceFunction::dependsOnTime() const {

@@ -23,6 +23,9 @@ class SpaceFunction {
     for (int i = 0; i < count_; ++i) args[i] = all[slot_[i]];
     return f_->evaluate(args);
   }
+  // As operator(), but throws aster::Error when the value is not a finite number:
+  // a FORMULE says which operation failed (log of a negative, division by zero...).
+  double checked(double x, double y, double z, double t) const;
   bool isConstant() const { return !f_; }
   bool dependsOnTime() const;
   const expr::FunctionPtr& function() const { return f_; }

@@ -30,6 +30,19 @@ mechanics::PlaneHypothesis hypothesisOf(model::Modelisation m) {
 
 constexpr int kMaxNodes = 9;
 
+// A load value at a point, or an aster::Error naming the load, the point and the
+// instant when the function is not a finite number there (NaN, infinity).
+double loadValue(const model::SpaceFunction& f, const char* load, const char* component,
+                 const std::string& where, double x, double y, double z, double t) {
+  if (f.isConstant()) return f(x, y, z, t);
+  try {
+    return f.checked(x, y, z, t);
+  } catch (const Error& e) {
+    throw Error(std::string(load) + " " + component + where + " at X = " + expr::numberText(x) +
+                ", Y = " + expr::numberText(y) + ", INST = " + expr::numberText(t) + ": " + e.what());
+  }
+}
+
 }  // namespace
 
 MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::move(problem)) {
@@ -108,11 +121,14 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const model::MechanicalLoad& lo
       F(dofs_.dof(nodes[a], 1)) += fe[2 * a + 1];
     }
   };
+  std::string where;
   for (const auto& ef : load.edgeForces) {
     auto traction = [&](const Eigen::Vector2d& p) {
-      return Eigen::Vector2d(ef.fx(p(0), p(1), 0.0, t), ef.fy(p(0), p(1), 0.0, t));
+      return Eigen::Vector2d(loadValue(ef.fx, "FORCE_CONTOUR", "FX", where, p(0), p(1), 0.0, t),
+                             loadValue(ef.fy, "FORCE_CONTOUR", "FY", where, p(0), p(1), 0.0, t));
     };
     for (int c : ef.cells) {
+      where = " on cell " + mesh.cellName(c);
       gatherCoords(c, X);
       fem::dispatchEdge(femType(mesh.cellType(c)), [&](auto tag) {
         constexpr fem::CellType T = decltype(tag)::value;
@@ -124,9 +140,11 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const model::MechanicalLoad& lo
   }
   for (const auto& bf : load.bodyForces) {
     auto force = [&](const Eigen::Vector2d& p) {
-      return Eigen::Vector2d(bf.fx(p(0), p(1), 0.0, t), bf.fy(p(0), p(1), 0.0, t));
+      return Eigen::Vector2d(loadValue(bf.fx, "FORCE_INTERNE", "FX", where, p(0), p(1), 0.0, t),
+                             loadValue(bf.fy, "FORCE_INTERNE", "FY", where, p(0), p(1), 0.0, t));
     };
     for (int c : bf.cells) {
+      where = " on cell " + mesh.cellName(c);
       gatherCoords(c, X);
       fem::dispatchSurface(femType(mesh.cellType(c)), [&](auto tag) {
         constexpr fem::CellType T = decltype(tag)::value;
@@ -140,8 +158,9 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const model::MechanicalLoad& lo
     for (int n : nf.nodes) {
       if (!dofs_.count(n)) continue;
       const Eigen::Vector3d p = mesh.node(n);
-      F(dofs_.dof(n, 0)) += nf.fx(p(0), p(1), p(2), t);
-      F(dofs_.dof(n, 1)) += nf.fy(p(0), p(1), p(2), t);
+      where = " on node " + mesh.nodeName(n);
+      F(dofs_.dof(n, 0)) += loadValue(nf.fx, "FORCE_NODALE", "FX", where, p(0), p(1), p(2), t);
+      F(dofs_.dof(n, 1)) += loadValue(nf.fy, "FORCE_NODALE", "FY", where, p(0), p(1), p(2), t);
     }
   return F;
 }
@@ -176,7 +195,10 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
     gatherCoords(e.meshCell, X);
     const double factor = e.load->factor(t);
     const int* d = elements_.dofs(e.element);
-    auto pressure = [&](const Eigen::Vector2d& p) { return factor * (*e.p)(p(0), p(1), 0.0, t); };
+    const std::string where = " on cell " + mesh.cellName(e.meshCell);
+    auto pressure = [&](const Eigen::Vector2d& p) {
+      return factor * loadValue(*e.p, "PRES_REP", "PRES", where, p(0), p(1), 0.0, t);
+    };
     fem::dispatchEdge(femType(mesh.cellType(e.meshCell)), [&](auto tag) {
       constexpr fem::CellType T = decltype(tag)::value;
       constexpr int nd = 2 * fem::Cell<T>::nodes;
@@ -205,7 +227,8 @@ std::vector<std::pair<int, double>> MechanicalSystem::imposed(double t) const {
         const int d = dof(n, im.component);
         if (d < 0) throw Error("imposed displacement on node " + mesh.nodeName(n) + ", which carries no DOF");
         const Eigen::Vector3d p = mesh.node(n);
-        const double v = factor * im.value(p(0), p(1), p(2), t);
+        const double v = factor * loadValue(im.value, "DDL_IMPO", im.component == 0 ? "DX" : "DY",
+                                            " on node " + mesh.nodeName(n), p(0), p(1), p(2), t);
         if (slot[d] >= 0) {
           out[slot[d]].second = v;
         } else {
