@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/error.hpp"
+
 namespace aster::lang {
 namespace {
 
@@ -11,6 +13,16 @@ void appendUnique(std::vector<int>& out, std::vector<char>& seen, const std::vec
       seen[i] = 1;
       out.push_back(i);
     }
+}
+
+// A group named in a command must hold something: an empty one would make the
+// occurrence apply to nothing, silently.
+const std::vector<int>& nonEmpty(const std::vector<int>& members, const std::string& group, const char* what,
+                                 const Keywords& occ) {
+  if (members.empty())
+    throw Error((occ.path.empty() ? std::string() : occ.path + ": ") + "group '" + group + "' is empty (no " +
+                what + "): the keyword would apply to nothing");
+  return members;
 }
 
 }  // namespace
@@ -23,7 +35,7 @@ std::vector<int> selectCells(const mesh::Mesh& mesh, const Keywords& occ) {
     for (int c = 0; c < mesh.cellCount(); ++c) all[c] = c;
     appendUnique(out, seen, all);
   }
-  for (const auto& g : occ.texts("GROUP_MA")) appendUnique(out, seen, mesh.cellGroup(g));
+  for (const auto& g : occ.texts("GROUP_MA")) appendUnique(out, seen, nonEmpty(mesh.cellGroup(g), g, "cell", occ));
   for (const auto& name : occ.texts("MAILLE")) appendUnique(out, seen, {mesh.cellIndex(name)});
   return out;
 }
@@ -33,7 +45,7 @@ std::vector<int> selectNodes(const mesh::Mesh& mesh, const Keywords& occ) {
   std::vector<char> seen(mesh.nodeCount(), 0);
   const auto cells = selectCells(mesh, occ);
   appendUnique(out, seen, mesh.nodesOfCells(cells));
-  for (const auto& g : occ.texts("GROUP_NO")) appendUnique(out, seen, mesh.nodeGroup(g));
+  for (const auto& g : occ.texts("GROUP_NO")) appendUnique(out, seen, nonEmpty(mesh.nodeGroup(g), g, "node", occ));
   for (const auto& name : occ.texts("NOEUD")) appendUnique(out, seen, {mesh.nodeIndex(name)});
   return out;
 }

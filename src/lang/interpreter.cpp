@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -70,7 +71,17 @@ class LuaCallable : public ScalarCallable {
     lua_rawgeti(L_, LUA_REGISTRYINDEX, ref_);
     for (int i = 0; i < count; ++i) lua_pushnumber(L_, args[i]);
     if (lua_pcall(L_, count, 1, 0) != LUA_OK) {
-      std::string msg = lua_isstring(L_, -1) ? lua_tostring(L_, -1) : "(error object is not a string)";
+      std::string msg = "(error object is not a string)";
+      if (lua_isstring(L_, -1)) {
+        msg = lua_tostring(L_, -1);
+      } else if (lua_istable(L_, -1)) {  // an aster-lite error raised inside the function
+        lua_getfield(L_, -1, "aster_fatal");
+        if (lua_isstring(L_, -1)) {
+          msg = lua_tostring(L_, -1);
+          if (msg.rfind("<F> <", 0) == 0 && msg.find("> ", 5) != std::string::npos) msg.erase(0, msg.find("> ", 5) + 2);
+        }
+        lua_pop(L_, 1);
+      }
       lua_pop(L_, 1);
       throw Error("the study's Lua function failed: " + msg);
     }
@@ -525,13 +536,25 @@ int Interpreter::runFile(const std::string& path) {
   }
   std::stringstream text;
   text << in.rdbuf();
-  return runString(text.str(), "@" + path);
+  return run(text.str(), "@" + path, true);
 }
 
 int Interpreter::runString(const std::string& code, const std::string& chunkName) {
+  return run(code, chunkName, false);
+}
+
+int Interpreter::run(const std::string& code, const std::string& chunkName, bool requireFin) {
   lua_State* L = state_->L;
   int status = luaL_loadbuffer(L, code.data(), code.size(), chunkName.c_str());
   if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
+  if (status == LUA_OK && requireFin) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "<F> <FIN> %s: the study ends without FIN{} (a study file cut short?); "
+                 "the commands before it ran, but the study is not complete\n",
+                 std::filesystem::path(chunkName.substr(chunkName.rfind('@') + 1)).filename().string().c_str());
+    std::fflush(stderr);
+    return finish(2);
+  }
   if (status == LUA_OK) return finish(0);
 
   std::string message;

@@ -16,6 +16,8 @@ class Interpreter {
   Interpreter& operator=(const Interpreter&) = delete;
 
   // Exit status as the program returns it: 0 all checks OK, 1 a check NOOK, 2 fatal error.
+  // A study file must end with FIN{}: one that runs to its end without it (a file
+  // cut short?) is a fatal error. runString accepts snippets without FIN.
   int runFile(const std::string& path);
   int runString(const std::string& code, const std::string& chunkName);
 
@@ -23,6 +25,7 @@ class Interpreter {
 
  private:
   int finish(int status);
+  int run(const std::string& code, const std::string& chunkName, bool requireFin);
   std::unique_ptr<State> state_;
   Session& session_;
 };

@@ -170,6 +170,8 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
         } else if (col >= nm) {
           where = " (a contact unknown)";
         }
+        // Surfaces that never meet leave the body free: say how contact stands.
+        if (terms_) where += " (contact: " + terms_->statusText() + ")";
         throw Error(std::string(e.what()) + where);
       }
       ++stats_.factorizations;

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -53,6 +54,16 @@ class AsterParser {
     std::istringstream in(text);
     std::string line;
     while (std::getline(in, line)) {
+      // A text mesh holds no control characters: say so rather than quoting binary bytes.
+      for (std::size_t c = 0; c < line.size(); ++c) {
+        const unsigned char b = static_cast<unsigned char>(line[c]);
+        if ((b < 32 && b != '\t' && b != '\r' && b != '\f' && b != '\v') || b == 127) {
+          char hex[8];
+          std::snprintf(hex, sizeof hex, "0x%02x", b);
+          throw Error(source_ + ":" + std::to_string(lines_.size() + 1) + ": binary byte " + hex + " at column " +
+                      std::to_string(c + 1) + ": this is not an ASTER text mesh (.mail)");
+        }
+      }
       const auto pct = line.find('%');
       if (pct != std::string::npos) line.erase(pct);
       if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -101,6 +112,7 @@ class AsterParser {
       else
         readCells(body, cellTypeFromName(keyword));
     }
+    if (!finished && lines_.empty()) throw Error(source_ + ": the file is empty (expected an ASTER mesh ended by FIN)");
     if (!finished)
       throw Error(source_ + ":" + std::to_string(lines_.size()) +
                   ": the file ends without FIN (truncated file?)");
