@@ -1,0 +1,15 @@
+-- expect-exit: 2
+-- expect-output: <F> <TEST_RESU> .*test_resu_bad_instant\.lua:14: INST=7 is not an instant of the result \(instants: 0, 0\.5, 1\)
+-- TEST_RESU at an instant that was not computed.
+DEBUT{}
+DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
+MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
+MO = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
+MAT = DEFI_MATERIAU{ELAS = {E = 1000.0, NU = 0.3}}
+CM = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MAT}}
+L = DEFI_LIST_REEL{DEBUT = 0.0, INTERVALLE = {JUSQU_A = 1.0, NOMBRE = 2}}
+BC = AFFE_CHAR_MECA{MODELE = MO, DDL_IMPO = {GROUP_MA = 'GAUCHE', DX = 0.0, DY = 0.0}}
+R = STAT_NON_LINE{MODELE = MO, CHAM_MATER = CM, EXCIT = {{CHARGE = BC}},
+  COMPORTEMENT = {RELATION = 'ELAS'}, INCREMENT = {LIST_INST = L}}
+TEST_RESU{RESU = {RESULTAT = R, NOM_CHAM = 'DEPL', INST = 7.0, GROUP_NO = 'COIN', NOM_CMP = 'DX', VALE_CALC = 0.0}}
+FIN{}
