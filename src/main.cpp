@@ -11,6 +11,7 @@
 #include "lang/docgen.hpp"
 #include "lang/interpreter.hpp"
 #include "lang/session.hpp"
+#include "solver/blas_info.hpp"
 
 namespace {
 
@@ -40,6 +41,7 @@ int usageError(const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  aster::solver::selectBlasKernels(argv);
   namespace fs = std::filesystem;
   aster::lang::Session session;
   std::string study, outputDir;

@@ -3,6 +3,10 @@
 #include <dlfcn.h>
 #include <limits.h>
 #include <stdlib.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdint>
 
 namespace aster::solver {
 
@@ -14,10 +18,58 @@ BlasInfo blasInUse() {
     char resolved[PATH_MAX];
     info.library = realpath(where.dli_fname, resolved) ? resolved : where.dli_fname;
   }
-  using ConfigFunction = char* (*)();
-  if (auto config = reinterpret_cast<ConfigFunction>(dlsym(RTLD_DEFAULT, "openblas_get_config")))
+  using TextFunction = char* (*)();
+  using IntFunction = int (*)();
+  if (auto config = reinterpret_cast<TextFunction>(dlsym(RTLD_DEFAULT, "openblas_get_config")))
     info.openblasConfig = config();
+  if (auto core = reinterpret_cast<TextFunction>(dlsym(RTLD_DEFAULT, "openblas_get_corename")))
+    info.openblasCore = core();
+  if (auto threads = reinterpret_cast<IntFunction>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads")))
+    info.threads = threads();
   return info;
+}
+
+namespace {
+
+#if defined(__x86_64__)
+// Register state the OS saves on context switches (XCR0): bits 1-2 SSE/AVX, 5-7 AVX-512.
+std::uint64_t osSavedState() {
+  __builtin_cpu_init();
+  unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+  __asm__("cpuid" : "=a"(eax), "=b"(ebx), "=c"(ecx), "=d"(edx) : "a"(1), "c"(0));
+  if (!(ecx & (1u << 27))) return 0;  // no OSXSAVE
+  unsigned lo = 0, hi = 0;
+  __asm__("xgetbv" : "=a"(lo), "=d"(hi) : "c"(0));
+  return (static_cast<std::uint64_t>(hi) << 32) | lo;
+}
+#endif
+
+}  // namespace
+
+void selectBlasKernels(char** argv) {
+#if defined(__x86_64__)
+  if (getenv("OPENBLAS_CORETYPE") || getenv("ASTER_BLAS_SELECTED")) return;
+  using TextFunction = char* (*)();
+  auto corename = reinterpret_cast<TextFunction>(dlsym(RTLD_DEFAULT, "openblas_get_corename"));
+  if (!corename) return;
+  std::string core = corename();
+  for (char& c : core) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (core != "prescott") return;  // OpenBLAS knew the CPU
+  const std::uint64_t xcr0 = osSavedState();
+  const char* choice = nullptr;
+  if ((xcr0 & 0xe6) == 0xe6 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+      __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq"))
+    choice = "SkylakeX";
+  else if ((xcr0 & 0x6) == 0x6 && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+    choice = "Haswell";
+  if (!choice) return;
+  setenv("OPENBLAS_CORETYPE", choice, 1);
+  setenv("ASTER_BLAS_SELECTED", "1", 1);  // never loop
+  execv("/proc/self/exe", argv);
+  // exec failed: go on with the generic kernels
+#else
+  (void)argv;
+#endif
 }
 
 }  // namespace aster::solver

@@ -1,6 +1,7 @@
 // Which BLAS the process uses (CHOLMOD's supernodal factorization calls dgemm/dsyrk/dpotrf).
-// CHOLMOD links libblas.so.3, which Debian's alternatives system points at one
-// implementation (reference BLAS or OpenBLAS); this reports the one actually loaded.
+// aster-lite links OpenBLAS explicitly (cmake/Dependencies.cmake), so its dgemm_ comes
+// before the libblas.so.3 that CHOLMOD names, whatever Debian's alternatives select;
+// this reports the library actually loaded.
 #pragma once
 #include <string>
 
@@ -9,8 +10,18 @@ namespace aster::solver {
 struct BlasInfo {
   std::string library;  // resolved file providing dgemm_, empty if no BLAS is loaded
   std::string openblasConfig;  // openblas_get_config() when OpenBLAS is loaded, empty otherwise
+  std::string openblasCore;    // openblas_get_corename(): the kernels OpenBLAS chose
+  int threads = 1;             // openblas_get_num_threads(), 1 for another BLAS
 };
 
 BlasInfo blasInUse();
+
+// OpenBLAS built for several CPUs (Debian's) picks its kernels from the CPU model; a model
+// newer than the library (Debian 12's 0.3.21 on Sapphire/Emerald Rapids) falls back to the
+// generic SSE3 "Prescott" kernels, 5x slower. When that happened, OPENBLAS_CORETYPE is unset
+// and the CPU and the OS support AVX-512 (or AVX2), this sets OPENBLAS_CORETYPE to SkylakeX
+// (or Haswell) and re-executes the program with the same arguments, since OpenBLAS reads the
+// variable when it is loaded. Returns only when nothing is to be done or exec failed.
+void selectBlasKernels(char** argv);
 
 }  // namespace aster::solver
