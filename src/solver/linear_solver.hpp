@@ -38,6 +38,8 @@ struct LinearSolverStatistics {
   int solveCount = 0;
   long long factorNonzeros = -1;  // entries stored in the factors after the last factorize; -1: unknown
   double factorFlops = -1.0;      // flops of the last factorization as the library reports them; -1: not reported
+  double numericSeconds = 0.0;    // the numeric factorizations alone (library call), total
+  std::string ordering;           // fill-reducing ordering the analysis chose, when the library tells it
 };
 
 class LinearSolver {

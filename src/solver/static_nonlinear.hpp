@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "solver/additional_terms.hpp"
+#include "solver/linear_solver.hpp"
 #include "solver/mechanical_system.hpp"
 
 namespace aster::solver {
@@ -53,6 +54,8 @@ class StaticNonlinear {
 
   int unknownCount() const { return n_; }
   const NewtonStatistics& statistics() const { return stats_; }
+  // The linear solver's: analysis, factorizations, ordering, flops of the last factorization.
+  const LinearSolverStatistics& solverStatistics() const;
 
  private:
   struct Attempt;
