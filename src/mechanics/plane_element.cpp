@@ -52,12 +52,15 @@ void PlaneElement<T>::internalForce(const Coords& X, const Vector& u, Vector* f,
         B(1, 2 * a + i) = F(i, 1) * G(a, 1);
         B(2, 2 * a + i) = F(i, 0) * G(a, 1) + F(i, 1) * G(a, 0);
       }
-    if (f) f->noalias() += (w * B.transpose()) * Eigen::Vector3d(S(0, 0), S(1, 1), S(0, 1));
+    if (f) f->noalias() += B.transpose() * Eigen::Vector3d(w * S(0, 0), w * S(1, 1), w * S(0, 1));
     if (K) {
-      const Eigen::Matrix<double, 3, dofs> DB = material_.voigt() * B;
-      K->noalias() += (w * B.transpose()) * DB;
+      // Small fixed-size products: coefficient-based (lazyProduct), not Eigen's blocked GEMM.
+      const Eigen::Matrix<double, 3, dofs> DB = material_.voigt().lazyProduct(B);
+      const Eigen::Matrix<double, dofs, 3> wBt = w * B.transpose();
+      K->noalias() += wBt.lazyProduct(DB);
       if (geometric) {
-        const Eigen::Matrix<double, nodes, nodes> g = w * (G * S * G.transpose());
+        const Eigen::Matrix<double, nodes, 2> GS = G.lazyProduct(w * S);
+        const Eigen::Matrix<double, nodes, nodes> g = GS.lazyProduct(G.transpose());
         for (int b = 0; b < nodes; ++b)
           for (int a = 0; a < nodes; ++a) {
             (*K)(2 * a, 2 * b) += g(a, b);

@@ -29,6 +29,8 @@ mechanics::PlaneHypothesis hypothesisOf(model::Modelisation m) {
 }
 
 constexpr int kMaxNodes = 9;
+// From this many cells on, the element kernels run on every thread, colour by colour.
+constexpr std::size_t kParallelCells = 4096;
 
 // A load value at a point, or an aster::Error naming the load, the point and the
 // instant when the function is not a finite number there (NaN, infinity).
@@ -76,6 +78,15 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
       d.push_back(dofs_.dof(n, 1));
     }
     cells_.push_back({c, it->second, elements_.add(d)});
+  }
+  if (cells_.size() >= kParallelCells) {
+    fem::ElementDofs cellDofs;
+    for (const Cell& cell : cells_) cellDofs.add(elements_.dofs(cell.element), elements_.size(cell.element));
+    try {
+      cellColours_ = fem::colourElements(cellDofs, dofCount());
+    } catch (const Error&) {
+      cellColours_.clear();  // more than 64 colours (a node in very many cells): serial assembly
+    }
   }
   for (const auto& applied : problem_.loads) {
     for (const auto& p : applied.load->pressures)
@@ -179,16 +190,35 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
                                 const fem::AssemblyPattern* pattern, SparseMatrix* K) const {
   fint.setZero(dofCount());
   fext.setZero(dofCount());
-  double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
-  for (const Cell& cell : cells_) {
+  // Element kernels on every thread, colour after colour (the kernels are pure functions
+  // of fixed-size arrays: no allocation, no Lua); loads below stay serial.
+  // Small models (the studies, the tests) keep the cells' order: same sums as ever.
+  double* const f = fint.data();
+  double* const values = K ? K->valuePtr() : nullptr;
+  auto element = [&](const Cell& cell, double* X, double* u, double* fe, double* Ke) {
     gatherCoords(cell.meshCell, X);
     const int n = cell.kernel->nodes();
     const int* d = elements_.dofs(cell.element);
     for (int i = 0; i < 2 * n; ++i) u[i] = U(d[i]);
-    cell.kernel->internalForce(X, u, fe, K ? Ke : nullptr);
-    for (int i = 0; i < 2 * n; ++i) fint(d[i]) += fe[i];
-    if (K) pattern->addMatrix(cell.element, Ke, K->valuePtr());
+    cell.kernel->internalForce(X, u, fe, values ? Ke : nullptr);
+    for (int i = 0; i < 2 * n; ++i) f[d[i]] += fe[i];
+    if (values) pattern->addMatrix(cell.element, Ke, values);
+  };
+  if (cellColours_.empty()) {
+    double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
+    for (const Cell& cell : cells_) element(cell, X, u, fe, Ke);
+  } else {
+#pragma omp parallel
+    {
+      double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
+      for (const std::vector<int>& colour : cellColours_) {
+        const int count = static_cast<int>(colour.size());
+#pragma omp for schedule(static)
+        for (int k = 0; k < count; ++k) element(cells_[colour[k]], X, u, fe, Ke);
+      }
+    }
   }
+  double X[2 * kMaxNodes];
   addDeadLoads(t, fext);
   const mesh::Mesh& mesh = problem_.model->mesh();
   for (const Edge& e : pressureEdges_) {

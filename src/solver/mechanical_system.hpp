@@ -88,6 +88,9 @@ class MechanicalSystem {
   fem::ElementDofs elements_;
   std::vector<std::unique_ptr<ElementKernel>> kernels_;
   std::vector<Cell> cells_;
+  // Indices in cells_ by colour: cells of one colour share no DOF, so each colour is
+  // assembled by all threads without races (and with the same sums for any thread count).
+  std::vector<std::vector<int>> cellColours_;
   std::vector<Edge> pressureEdges_;
   // Dead loads independent of time, computed once: F(t) = factor(t) * F0.
   std::vector<Eigen::VectorXd> constantDeadLoads_;  // per problem_.loads entry, empty if time dependent
