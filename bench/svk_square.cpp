@@ -4,9 +4,12 @@
 // RESI_GLOB_RELA = 1e-8. Prints DOFs, Newton iterations, seconds (total,
 // assembly, linear solver), peak memory and the final reaction on the top edge
 // (force of the support on the body), to compare with other programs.
-//   bench_svk_square [N ...] [--solver UMFPACK|CHOLMOD|KLU|EIGEN_LU]
+// Also: the ordering and flops of the factorization, its rate (flops of one factorization
+// over the median time of one), and the rate of a dense dgemm with the BLAS linked.
+//   bench_svk_square [N ...] [--solver UMFPACK|CHOLMOD|KLU|EIGEN_LU] [--dgemm n] [--csv]
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -17,11 +20,35 @@
 
 #include "support/square_mesh.hpp"
 #include "expr/expression.hpp"
+#include "solver/blas_info.hpp"
 #include "solver/static_nonlinear.hpp"
 
 using namespace aster;
 
+extern "C" void dgemm_(const char*, const char*, const int*, const int*, const int*, const double*, const double*,
+                       const int*, const double*, const int*, const double*, double*, const int*);
+
 namespace {
+
+bool csv = false;
+
+// GFLOP/s of C = A B with n x n matrices, best of 5 (the machine is shared).
+double dgemmRate(int n) {
+  std::vector<double> a(static_cast<size_t>(n) * n), b(a.size()), c(a.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    a[i] = 1.0 / (1 + i % 97);
+    b[i] = 1.0 / (1 + i % 89);
+  }
+  const double one = 1, zero = 0;
+  double best = 0;
+  for (int r = 0; r < 5; ++r) {
+    const auto t = std::chrono::steady_clock::now();
+    dgemm_("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    best = std::max(best, 2.0 * n * n * static_cast<double>(n) / s / 1e9);
+  }
+  return best;
+}
 
 double peakMegabytes() {
   rusage u{};
@@ -71,24 +98,52 @@ void run(int N, const std::string& method) {
   });
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto& s = newton.statistics();
-  std::printf("| %4d | %9d | %3d | %8.2f | %8.2f | %8.2f | %8.0f | %+.7f | %+.7f | %s |\n", N, system.dofCount(),
-              s.iterations, total, s.assemblySeconds, s.solveSeconds, peakMegabytes(), rx, ry, method.c_str());
+  const auto& ls = newton.solverStatistics();
+  const double perFactorization = ls.factorizeCount ? (ls.numericSeconds > 0 ? ls.numericSeconds : ls.factorizeSeconds) / ls.factorizeCount : 0.0;
+  const double gflops = ls.factorFlops > 0 && perFactorization > 0 ? ls.factorFlops / perFactorization / 1e9 : 0.0;
+  if (csv)
+    std::printf("%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%.4g,%.2f,%.0f,%.8g,%.8g,%s,%s\n", N, system.dofCount(),
+                s.iterations, total, s.assemblySeconds, s.solveSeconds, ls.analyzeSeconds, ls.factorizeSeconds,
+                ls.factorizeCount, ls.factorFlops, gflops, peakMegabytes(), rx, ry, method.c_str(),
+                ls.ordering.empty() ? "-" : ls.ordering.c_str());
+  else
+    std::printf("| %4d | %9d | %3d | %8.2f | %8.2f | %8.2f | %8.2f | %9.3g | %6.1f | %8.0f | %+.7f | %+.7f | %s %s |\n",
+                N, system.dofCount(), s.iterations, total, s.assemblySeconds, s.solveSeconds, ls.factorizeSeconds,
+                ls.factorFlops, gflops, peakMegabytes(), rx, ry, method.c_str(), ls.ordering.c_str());
   std::fflush(stdout);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  solver::selectBlasKernels(argv);
   std::vector<int> sizes;
-  std::string method = "UMFPACK";
+  std::string method = "CHOLMOD";
+  int dgemmSize = 0;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--solver") && i + 1 < argc)
       method = argv[++i];
+    else if (!std::strcmp(argv[i], "--dgemm") && i + 1 < argc)
+      dgemmSize = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--csv"))
+      csv = true;
     else
       sizes.push_back(std::atoi(argv[i]));
   }
-  if (sizes.empty()) sizes = {64, 128};
-  std::printf("| N | DOFs | Newton it. | total s | assembly s | solver s | peak MiB | Rx top | Ry top | solver |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
-  for (int N : sizes) run(N, method);
+  const solver::BlasInfo blas = solver::blasInUse();
+  std::printf("%s BLAS: %s (%s, core %s, %d threads)\n", csv ? "#" : "", blas.library.c_str(),
+              blas.openblasConfig.empty() ? "-" : blas.openblasConfig.c_str(),
+              blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(), blas.threads);
+  if (dgemmSize > 0) std::printf("%s dgemm n=%d: %.1f GFLOP/s\n", csv ? "#" : "", dgemmSize, dgemmRate(dgemmSize));
+  if (csv) {
+    std::printf("N,dofs,newton,total_s,assembly_s,solve_s,analyze_s,factorize_s,factorizations,factor_flops,"
+                "factor_gflops,peak_mib,rx,ry,solver,ordering\n");
+  } else {
+    std::printf("| N | DOFs | Newton it. | total s | assembly s | solver s | factorize s | flops/fact. | GFLOP/s | "
+                "peak MiB | Rx top | Ry top | solver |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  }
+  std::fflush(stdout);
+  if (sizes.empty() && dgemmSize > 0) return 0;  // the dense rate only
+  for (int N : sizes.empty() ? std::vector<int>{64, 128} : sizes) run(N, method);
 }
