@@ -536,25 +536,15 @@ int Interpreter::runFile(const std::string& path) {
   }
   std::stringstream text;
   text << in.rdbuf();
-  return run(text.str(), "@" + path, true);
+  return runString(text.str(), "@" + path);
 }
 
+// DEBUT and FIN are optional, as the catalogue of issue 2 wants: a study may
+// end with its last command.
 int Interpreter::runString(const std::string& code, const std::string& chunkName) {
-  return run(code, chunkName, false);
-}
-
-int Interpreter::run(const std::string& code, const std::string& chunkName, bool requireFin) {
   lua_State* L = state_->L;
   int status = luaL_loadbuffer(L, code.data(), code.size(), chunkName.c_str());
   if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
-  if (status == LUA_OK && requireFin) {
-    std::fflush(stdout);
-    std::fprintf(stderr, "<F> <FIN> %s: the study ends without FIN{} (a study file cut short?); "
-                 "the commands before it ran, but the study is not complete\n",
-                 std::filesystem::path(chunkName.substr(chunkName.rfind('@') + 1)).filename().string().c_str());
-    std::fflush(stderr);
-    return finish(2);
-  }
   if (status == LUA_OK) return finish(0);
 
   std::string message;

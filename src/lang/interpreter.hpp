@@ -25,7 +25,6 @@ class Interpreter {
 
  private:
   int finish(int status);
-  int run(const std::string& code, const std::string& chunkName, bool requireFin);
   std::unique_ptr<State> state_;
   Session& session_;
 };
