@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "fem/mesh_cell_type.hpp"
 #include "fem/cell_type.hpp"
 #include "fem/isoparametric.hpp"
 #include "fem/quadrature.hpp"
@@ -12,20 +13,6 @@
 namespace aster::post {
 namespace {
 
-fem::CellType femType(mesh::CellType t) {
-  switch (t) {
-    case mesh::CellType::SEG2: return fem::CellType::SEG2;
-    case mesh::CellType::SEG3: return fem::CellType::SEG3;
-    case mesh::CellType::TRIA3: return fem::CellType::TRIA3;
-    case mesh::CellType::TRIA6: return fem::CellType::TRIA6;
-    case mesh::CellType::QUAD4: return fem::CellType::QUAD4;
-    case mesh::CellType::QUAD8: return fem::CellType::QUAD8;
-    case mesh::CellType::QUAD9: return fem::CellType::QUAD9;
-    default: break;
-  }
-  throw Error("L2 norms are computed on SEG2, SEG3, TRIA3, TRIA6, QUAD4, QUAD8, QUAD9 cells, not on " +
-              mesh::cellTypeName(t));
-}
 
 struct Accumulator {
   const NodalValues& field;
@@ -125,7 +112,7 @@ L2Result l2Norms(const mesh::Mesh& mesh, const std::vector<int>& cells, const No
   Accumulator acc{field, exact};
   int dim = -1;
   for (int cell : cells) {
-    const fem::CellType t = femType(mesh.cellType(cell));
+    const fem::CellType t = fem::referenceCell(mesh.cellType(cell), "L2 norms");
     const int d = fem::cellDimension(t);
     if (dim >= 0 && d != dim)
       throw Error("L2 norm: cells of dimensions 1 and 2 mixed (cell " + mesh.cellName(cell) +

@@ -4,24 +4,13 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "fem/mesh_cell_type.hpp"
 #include "mechanics/loads.hpp"
 #include "mesh/cell_type.hpp"
 
 namespace aster::solver {
 namespace {
 
-fem::CellType femType(mesh::CellType t) {
-  switch (t) {
-    case mesh::CellType::SEG2: return fem::CellType::SEG2;
-    case mesh::CellType::SEG3: return fem::CellType::SEG3;
-    case mesh::CellType::TRIA3: return fem::CellType::TRIA3;
-    case mesh::CellType::TRIA6: return fem::CellType::TRIA6;
-    case mesh::CellType::QUAD4: return fem::CellType::QUAD4;
-    case mesh::CellType::QUAD8: return fem::CellType::QUAD8;
-    case mesh::CellType::QUAD9: return fem::CellType::QUAD9;
-    default: throw Error("a " + mesh::cellTypeName(t) + " cell cannot carry a plane load");
-  }
-}
 
 mechanics::PlaneHypothesis hypothesisOf(model::Modelisation m) {
   return m == model::Modelisation::PlaneStrain ? mechanics::PlaneHypothesis::PlaneStrain
@@ -141,7 +130,7 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const model::MechanicalLoad& lo
     for (int c : ef.cells) {
       where = " on cell " + mesh.cellName(c);
       gatherCoords(c, X);
-      fem::dispatchEdge(femType(mesh.cellType(c)), [&](auto tag) {
+      fem::dispatchEdge(fem::referenceCell(mesh.cellType(c), "loads"), [&](auto tag) {
         constexpr fem::CellType T = decltype(tag)::value;
         const Eigen::Map<const fem::EdgeCoords<T>> x(X);
         const auto fe = mechanics::deadEdgeTraction<T>(x, traction);
@@ -157,7 +146,7 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const model::MechanicalLoad& lo
     for (int c : bf.cells) {
       where = " on cell " + mesh.cellName(c);
       gatherCoords(c, X);
-      fem::dispatchSurface(femType(mesh.cellType(c)), [&](auto tag) {
+      fem::dispatchSurface(fem::referenceCell(mesh.cellType(c), "loads"), [&](auto tag) {
         constexpr fem::CellType T = decltype(tag)::value;
         const Eigen::Map<const fem::NodeCoords<T>> x(X);
         const auto fe = mechanics::bodyForce<T>(x, force);
@@ -229,7 +218,7 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
     auto pressure = [&](const Eigen::Vector2d& p) {
       return factor * loadValue(*e.p, "PRES_REP", "PRES", where, p(0), p(1), 0.0, t);
     };
-    fem::dispatchEdge(femType(mesh.cellType(e.meshCell)), [&](auto tag) {
+    fem::dispatchEdge(fem::referenceCell(mesh.cellType(e.meshCell), "loads"), [&](auto tag) {
       constexpr fem::CellType T = decltype(tag)::value;
       constexpr int nd = 2 * fem::Cell<T>::nodes;
       const Eigen::Map<const fem::EdgeCoords<T>> x(X);

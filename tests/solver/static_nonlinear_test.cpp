@@ -11,6 +11,7 @@
 #include "../support/square_mesh.hpp"
 #include "expr/expression.hpp"
 #include "expr/manufactured.hpp"
+#include "fem/mesh_cell_type.hpp"
 #include "fem/cell_type.hpp"
 #include "fem/quadrature.hpp"
 #include "fem/shape_functions.hpp"
@@ -23,15 +24,6 @@ namespace {
 const char* kUx = "-0.2*Y**3*(X-0.5)";
 const char* kUy = "-0.05*(X-0.5)**2*(1+Y) - 0.01*Y";
 
-fem::CellType femType(mesh::CellType t) {
-  switch (t) {
-    case mesh::CellType::TRIA3: return fem::CellType::TRIA3;
-    case mesh::CellType::TRIA6: return fem::CellType::TRIA6;
-    case mesh::CellType::QUAD4: return fem::CellType::QUAD4;
-    case mesh::CellType::QUAD8: return fem::CellType::QUAD8;
-    default: return fem::CellType::QUAD9;
-  }
-}
 
 struct Outcome {
   double l2Error = 0;
@@ -89,7 +81,7 @@ Outcome solve(int N, mesh::CellType type, mechanics::Kinematics kin, int steps) 
   double e2 = 0;
   for (int c : m->cellGroup("SURFACE")) {
     const auto nodes = m->cellNodes(c);
-    fem::dispatchSurface(femType(m->cellType(c)), [&](auto tag) {
+    fem::dispatchSurface(fem::referenceCell(m->cellType(c), "test"), [&](auto tag) {
       constexpr fem::CellType T = decltype(tag)::value;
       using C = fem::Cell<T>;
       const auto& rule = (T == fem::CellType::TRIA3 || T == fem::CellType::TRIA6) ? fem::gaussTriangle(6)
