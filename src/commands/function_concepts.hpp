@@ -11,7 +11,7 @@ namespace aster::lang {
 
 class FunctionConcept : public Concept {
  public:
-  FunctionConcept(std::string type, expr::FunctionPtr f) : type_(std::move(type)), function(std::move(f)) {}
+  FunctionConcept(std::string type, expr::FunctionPtr f) : function(std::move(f)), type_(std::move(type)) {}
   std::string typeName() const override { return type_; }
   expr::FunctionPtr function;
 
