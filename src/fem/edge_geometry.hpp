@@ -17,15 +17,15 @@ template <CellType T>
 using EdgeCoords = Eigen::Matrix<double, Cell<T>::nodes, 2>;
 
 struct EdgeFrame {
-  Eigen::Vector2d point;    // x(xi)
-  Eigen::Vector2d dx;       // dx/dxi (unnormalised tangent)
-  Eigen::Vector2d d2x;      // d2x/dxi2 (zero for SEG2)
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();    // x(xi)
+  Eigen::Vector2d dx = Eigen::Vector2d::Zero();       // dx/dxi (unnormalised tangent)
+  Eigen::Vector2d d2x = Eigen::Vector2d::Zero();      // d2x/dxi2 (zero for SEG2)
   double jacobian = 0;      // |dx/dxi|: ds = jacobian * dxi
-  Eigen::Vector2d tangent;  // dx/dxi / |dx/dxi|
-  Eigen::Vector2d normal;   // (t_y, -t_x)
+  Eigen::Vector2d tangent = Eigen::Vector2d::Zero();  // dx/dxi / |dx/dxi|
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero();   // (t_y, -t_x)
   double curvature = 0;     // signed: (x' ^ x'') / |x'|^3, > 0 when the edge turns left
-  Eigen::Vector2d dNormal;  // dn/dxi = curvature * jacobian * tangent
-  Eigen::Vector2d dTangent; // dt/dxi = -curvature * jacobian * normal
+  Eigen::Vector2d dNormal = Eigen::Vector2d::Zero();  // dn/dxi = curvature * jacobian * tangent
+  Eigen::Vector2d dTangent = Eigen::Vector2d::Zero(); // dt/dxi = -curvature * jacobian * normal
 };
 
 template <CellType T>

@@ -1,5 +1,6 @@
 #include "solver/mechanical_system.hpp"
 
+#include <exception>
 #include <map>
 #include <tuple>
 
@@ -195,15 +196,37 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
   };
   if (cellColours_.empty()) {
     double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
-    for (const Cell& cell : cells_) element(cell, X, u, fe, Ke);
+    try {
+      for (const Cell& cell : cells_) element(cell, X, u, fe, Ke);
+    } catch (const Error& e) {
+      throw InvalidStateError(e.what());
+    }
   } else {
+    // A kernel may throw (an inverted cell during a diverging Newton): an
+    // exception must not leave an OpenMP region, so the first one is kept and
+    // thrown after it, for the step to be cut as in the serial case.
+    std::exception_ptr failure;
 #pragma omp parallel
     {
       double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
       for (const std::vector<int>& colour : cellColours_) {
         const int count = static_cast<int>(colour.size());
 #pragma omp for schedule(static)
-        for (int k = 0; k < count; ++k) element(cells_[colour[k]], X, u, fe, Ke);
+        for (int k = 0; k < count; ++k) {
+          try {
+            element(cells_[colour[k]], X, u, fe, Ke);
+          } catch (...) {
+#pragma omp critical(aster_assembly_failure)
+            if (!failure) failure = std::current_exception();
+          }
+        }
+      }
+    }
+    if (failure) {
+      try {
+        std::rethrow_exception(failure);
+      } catch (const Error& e) {
+        throw InvalidStateError(e.what());
       }
     }
   }

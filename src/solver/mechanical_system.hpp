@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "core/error.hpp"
 #include "expr/function.hpp"
 #include "fem/assembly_pattern.hpp"
 #include "fem/dof_map.hpp"
@@ -23,6 +24,13 @@
 namespace aster::solver {
 
 using SparseMatrix = fem::SparseMatrix;
+
+// An element kernel refused the state (an inverted cell after too large a
+// Newton correction): a failure that cutting the step may cure.
+class InvalidStateError : public Error {
+ public:
+  using Error::Error;
+};
 
 struct AppliedLoad {
   const model::MechanicalLoad* load = nullptr;

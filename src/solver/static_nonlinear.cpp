@@ -76,7 +76,16 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     if (terms_ && terms_->update(U)) buildPattern();
     if (!pattern_) buildPattern();
     const bool newMatrix = !settings_.elasticMatrix && (k == 0 || (settings_.reacIter > 0 && k % settings_.reacIter == 0));
-    assemble(U, t1, newMatrix);
+    try {
+      assemble(U, t1, newMatrix);
+    } catch (const InvalidStateError& e) {
+      // An inverted cell after too large a correction: the step may succeed
+      // when cut, as with code_aster's EVENEMENT='ERREUR'. Invalid data (a
+      // load that is not finite) stops at once.
+      why = e.what();
+      stats_.iterations += k;
+      return false;
+    }
     if (settings_.elasticMatrix && Kelastic_.size() == 0) {
       Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
       Eigen::VectorXd keepFint = fint_, keepFext = fext_, keepR = r_;
