@@ -204,7 +204,10 @@ std::string callSite(lua_State* L) {
   lua_Debug ar;
   for (int level = 1; lua_getstack(L, level, &ar); ++level) {
     lua_getinfo(L, "Sl", &ar);
-    if (ar.currentline > 0) return std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
+    if (ar.currentline <= 0) continue;
+    // The study's path as given (short_src would cut a long path with "...").
+    const std::string file = (ar.source && ar.source[0] == '@') ? ar.source + 1 : ar.short_src;
+    return file + ":" + std::to_string(ar.currentline);
   }
   return "?";
 }
@@ -249,6 +252,8 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
     if (!op)
       throw Error("the keywords are valid, but " + spec.name + " has no kernel in aster-lite " +
                   std::string(ASTER_VERSION) + " yet; no result is produced");
+    // Ctrl-C outside a long computation: the study stops before the next command.
+    if (interrupt::requested()) throw Interrupted("interrupted (SIGINT) before " + spec.name);
     session.where = where;
     session.command = spec.name;
     session.produced.clear();

@@ -1,5 +1,5 @@
 -- expect-exit: 2
--- expect-output: <F> <AFFE_CHAR_MECA_F> \.\.\.k/wt-lang/tests/bad_input/formule_bad_load_parameter\.lua:12: FORCE_INTERNE\[1\]/FX: a load function may depend on X, Y, Z and INST only. its parameter 'TEMP' is none of them
+-- expect-output: <F> <AFFE_CHAR_MECA_F> .*formule_bad_load_parameter\.lua:12: FORCE_INTERNE\[1\]/FX: a load function may depend on X, Y, Z and INST only. its parameter 'TEMP' is none of them
 -- A load function of a parameter other than X, Y, Z, INST.
 DEBUT{}
 DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
