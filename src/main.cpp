@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "lang/catalogue.hpp"
 #include "lang/docgen.hpp"
@@ -31,7 +32,8 @@ const char* kUsage =
     "  --help            print this help and exit\n"
     "\n"
     "exit status: 0 the study ran and every check was OK, 1 a check was NOOK,\n"
-    "             2 a fatal error (<F>) stopped the study\n";
+    "             2 a fatal error (<F>) stopped the study,\n"
+    "             130 Ctrl-C stopped it (converged instants are on disk)\n";
 
 int usageError(const std::string& what) {
   std::fprintf(stderr, "<F> <aster-lite> %s\n%s", what.c_str(), kUsage);
@@ -94,6 +96,7 @@ int main(int argc, char** argv) {
   if (!fs::exists(study)) return usageError("the study file " + study + " does not exist");
 
   aster::Messages::setQuiet(quiet);
+  aster::interrupt::install();
   session.studyPath = study;
   session.outputDir = outputDir.empty() ? fs::path(study).replace_extension("") : fs::path(outputDir);
   try {

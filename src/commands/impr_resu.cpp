@@ -5,7 +5,6 @@
 // <output>/<study>.resu.txt|.med|.msh|.vtu|.pvd. Files are written in a private
 // folder beside the target and renamed into place: an interrupted run never
 // leaves a half-written file.
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +22,7 @@
 #include "commands/mesh_concept.hpp"
 #include "commands/result_concepts.hpp"
 #include "commands/selection.hpp"
+#include "core/atomic_write.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
 #include "lang/operators.hpp"
@@ -35,43 +35,6 @@ namespace aster::lang {
 namespace {
 
 namespace fs = std::filesystem;
-
-// ------------------------------------------------------------ atomic output
-
-// Runs write(<private folder>/<target file name>) and then renames every file
-// it made into the target's folder, the target itself last (a .pvd names its
-// .vtu files: they are in place before it is). On failure nothing is renamed.
-void writeAtomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw Error("cannot create the folder " + dir.string() + ": " + ec.message());
-  static unsigned counter = 0;
-  const fs::path tmp = dir / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()) + "-" +
-                              std::to_string(++counter));
-  fs::create_directory(tmp, ec);
-  if (ec) throw Error("cannot create the temporary folder " + tmp.string() + ": " + ec.message());
-  try {
-    write(tmp / target.filename());
-    std::vector<fs::path> made;
-    for (const auto& e : fs::directory_iterator(tmp)) made.push_back(e.path());
-    std::sort(made.begin(), made.end(), [&](const fs::path& a, const fs::path& b) {
-      const bool at = a.filename() == target.filename(), bt = b.filename() == target.filename();
-      return at != bt ? bt : a < b;
-    });
-    if (made.empty() || made.back().filename() != target.filename())
-      throw Error("internal error: the writer made no file " + target.filename().string());
-    for (const auto& p : made) {
-      fs::rename(p, dir / p.filename(), ec);
-      if (ec) throw Error("cannot move " + p.string() + " to " + (dir / p.filename()).string() + ": " + ec.message());
-    }
-  } catch (...) {
-    std::error_code ignored;
-    fs::remove_all(tmp, ignored);
-    throw;
-  }
-  fs::remove_all(tmp, ec);
-}
 
 // ------------------------------------------------------------ what to write
 

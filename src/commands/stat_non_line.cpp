@@ -7,9 +7,11 @@
 #include "commands/function_concepts.hpp"
 #include "commands/list_inst_concept.hpp"
 #include "commands/model_concepts.hpp"
+#include "commands/result_archive.hpp"
 #include "commands/result_concepts.hpp"
 #include "commands/selection.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "lang/operators.hpp"
 #include "solver/static_nonlinear.hpp"
@@ -131,7 +133,12 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     result->instants.push_back(first);
   }
 
-  std::vector<int> gaussOffsets;
+  // Every instant goes to disk as soon as it is in the result.
+  const std::string stem = session.uniqueOutputStem(session.assignedName.empty() ? "STAT_NON_LINE" : session.assignedName);
+  ResultArchive archive(mesh, session.outputFile(stem + ".pvd"));
+  for (const auto& inst : result->instants) archive.add(inst);
+  Messages::info("STAT_NON_LINE: each converged instant is written to " + archive.path().string());
+
   auto store = [&](const solver::ConvergedInstant& c) {
     ResultInstant inst;
     inst.index = static_cast<int>(result->instants.size());
@@ -154,9 +161,13 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     system.gaussStresses(*c.U, sief.offsets, sief.values);
     inst.gauss.push_back(std::move(sief));
     result->instants.push_back(std::move(inst));
+    archive.add(result->instants.back());
   };
   try {
     newtonSolver.run(U, times, store);
+  } catch (const Interrupted& e) {
+    throw Interrupted(std::string(e.what()) + "; " + std::to_string(result->instants.size()) +
+                      " instant(s) were stored before it");
   } catch (const Error& e) {
     // The converged instants stay in the result; the study stops here.
     throw Error(std::string(e.what()) + "; " + std::to_string(result->instants.size()) +

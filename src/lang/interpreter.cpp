@@ -6,8 +6,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <regex>
 #include <sstream>
 
+#include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "core/suggest.hpp"
 #include "lang/catalogue.hpp"
@@ -24,6 +27,7 @@ struct Interpreter::State {
   lua_State* L = nullptr;
   Session* session = nullptr;
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
+  std::map<std::string, std::vector<std::string>> sources;  // lines of each chunk run, by chunk name
 };
 
 namespace {
@@ -212,6 +216,21 @@ std::string callSite(lua_State* L) {
   return "?";
 }
 
+// The variable the command's result is assigned to, read from the calling line
+// as code_aster's supervisor reads the .comm file: "RESU = STAT_NON_LINE{" gives
+// RESU (also with `local`); anything else (a table field, an argument) gives "".
+std::string assignedName(lua_State* L, const std::string& command) {
+  lua_Debug ar;
+  if (!lua_getstack(L, 1, &ar) || !lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0 || !ar.source) return "";
+  const auto& sources = stateOf(L).sources;
+  const auto it = sources.find(ar.source);
+  if (it == sources.end() || ar.currentline > static_cast<int>(it->second.size())) return "";
+  const std::regex assignment("(?:^|[;\\s])(?:local\\s+)?([A-Za-z_][A-Za-z0-9_]*)\\s*=\\s*" + command + "\\s*[{(]");
+  std::smatch m;
+  const std::string& line = it->second[ar.currentline - 1];
+  return std::regex_search(line, m, assignment) ? m[1].str() : "";
+}
+
 // Error objects carried through lua_error to the top level.
 void pushFatal(lua_State* L, const std::string& message) {
   lua_newtable(L);
@@ -256,6 +275,7 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
     if (interrupt::requested()) throw Interrupted("interrupted (SIGINT) before " + spec.name);
     session.where = where;
     session.command = spec.name;
+    session.assignedName = assignedName(L, spec.name);
     session.produced.clear();
     ConceptPtr result = (*op)(valid, session, reuse);
     for (auto& [name, concept] : session.produced) {
@@ -274,6 +294,10 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
     return 1;
   } catch (const ValidationError& e) {
     pushFatal(L, fatalText(spec.name, where, e.what()));
+  } catch (const Interrupted& e) {
+    pushFatal(L, fatalText(spec.name, where, e.what()));
+    lua_pushboolean(L, 1);
+    lua_setfield(L, -2, "aster_interrupted");
   } catch (const Error& e) {
     pushFatal(L, fatalText(spec.name, where, e.what()));
   } catch (const StudyFinished&) {
@@ -548,15 +572,21 @@ int Interpreter::runFile(const std::string& path) {
 // end with its last command.
 int Interpreter::runString(const std::string& code, const std::string& chunkName) {
   lua_State* L = state_->L;
+  auto& lines = state_->sources[chunkName];
+  std::istringstream text(code);
+  for (std::string line; std::getline(text, line);) lines.push_back(line);
   int status = luaL_loadbuffer(L, code.data(), code.size(), chunkName.c_str());
   if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
   if (status == LUA_OK) return finish(0);
 
   std::string message;
-  bool finished = false;
+  bool finished = false, interrupted = false;
   if (lua_istable(L, -1)) {
     lua_getfield(L, -1, "aster_fin");
     finished = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+    lua_getfield(L, -1, "aster_interrupted");
+    interrupted = lua_toboolean(L, -1);
     lua_pop(L, 1);
     lua_getfield(L, -1, "aster_fatal");
     if (lua_isstring(L, -1)) message = lua_tostring(L, -1);
@@ -571,7 +601,7 @@ int Interpreter::runString(const std::string& code, const std::string& chunkName
   std::fflush(stdout);
   std::fprintf(stderr, "%s\n", message.c_str());
   std::fflush(stderr);
-  return finish(2);
+  return finish(interrupted ? kInterruptedStatus : 2);
 }
 
 int Interpreter::finish(int status) {

@@ -8,6 +8,9 @@
 
 namespace aster::lang {
 
+// 128 + SIGINT: what shells and scripts expect of a program stopped by Ctrl-C.
+constexpr int kInterruptedStatus = 130;
+
 class Interpreter {
  public:
   explicit Interpreter(Session& session);
@@ -15,9 +18,8 @@ class Interpreter {
   Interpreter(const Interpreter&) = delete;
   Interpreter& operator=(const Interpreter&) = delete;
 
-  // Exit status as the program returns it: 0 all checks OK, 1 a check NOOK, 2 fatal error.
-  // A study file must end with FIN{}: one that runs to its end without it (a file
-  // cut short?) is a fatal error. runString accepts snippets without FIN.
+  // Exit status as the program returns it: 0 all checks OK, 1 a check NOOK, 2 fatal
+  // error, kInterruptedStatus after Ctrl-C. DEBUT and FIN may be omitted.
   int runFile(const std::string& path);
   int runString(const std::string& code, const std::string& chunkName);
 

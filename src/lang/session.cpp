@@ -30,6 +30,11 @@ std::filesystem::path Session::outputFile(const std::string& name) const {
   return outputDir / name;
 }
 
+std::string Session::uniqueOutputStem(const std::string& base) {
+  const int n = ++stems_[base];
+  return n == 1 ? base : base + "-" + std::to_string(n);
+}
+
 std::filesystem::path Session::resuPath() const {
   return outputDir / (studyPath.stem().string() + ".resu");
 }

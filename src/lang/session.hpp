@@ -23,6 +23,9 @@ struct Session {
   // Where the command being run was called from: "studies/a.lua:12".
   std::string where;
   std::string command;
+  // The variable its result is assigned to on that line ("RESU" for
+  // RESU = STAT_NON_LINE{...}), empty when the call is no plain assignment.
+  std::string assignedName;
 
   // Concepts a macro-command created under names given with CO('name'):
   // the interpreter binds each to a global variable of the study after the call.
@@ -46,6 +49,13 @@ struct Session {
   std::filesystem::path unitPath(int unit, const std::string& defaultExtension) const;
   // Makes sure the output folder exists; returns path/name inside it.
   std::filesystem::path outputFile(const std::string& name) const;
+  // A file stem in the output folder not handed out before in this run: `base`,
+  // then base-2, base-3, ... (a STAT_NON_LINE in a loop gets its own files each
+  // time; "-" because "_<k>" numbers the instants of one result).
+  std::string uniqueOutputStem(const std::string& base);
+
+ private:
+  std::map<std::string, int> stems_;
 };
 
 }  // namespace aster::lang

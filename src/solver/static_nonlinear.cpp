@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "solver/linear_solver.hpp"
 
@@ -73,6 +74,10 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     Messages::info("  Instant " + sci(t1) + "\n    iter  " + (settings_.useRela ? "RESI_GLOB_RELA" : "RESI_GLOB_MAXI") +
                    "   RESI_GLOB_MAXI   matrix       " + (terms_ ? "contact" : ""));
   for (int k = 0;; ++k) {
+    // Ctrl-C: the unconverged instant is abandoned; the converged ones are kept.
+    if (interrupt::requested())
+      throw Interrupted("interrupted (SIGINT) during the instant " + sci(t1) + " (Newton iteration " +
+                        std::to_string(k) + "), which is abandoned");
     if (terms_ && terms_->update(U)) buildPattern();
     if (!pattern_) buildPattern();
     const bool newMatrix = !settings_.elasticMatrix && (k == 0 || (settings_.reacIter > 0 && k % settings_.reacIter == 0));

@@ -88,19 +88,27 @@ void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<Nodal
   if (!out) throw Error("error while writing the VTK file '" + path + "'");
 }
 
-void writePvd(const Mesh& mesh, const std::string& pvdPath, const std::vector<FieldInstant>& instants) {
-  std::string stem = pvdPath;
-  if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".pvd") stem.resize(stem.size() - 4);
+void writePvdCollection(const std::string& pvdPath, const std::vector<PvdEntry>& entries) {
   std::ofstream out(pvdPath);
   if (!out) throw Error("cannot write the VTK collection '" + pvdPath + "'");
   out << std::setprecision(16);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (const auto& e : entries)
+    out << "<DataSet timestep=\"" << e.time << "\" part=\"0\" file=\"" << e.file << "\"/>\n";
+  out << "</Collection>\n</VTKFile>\n";
+  if (!out) throw Error("error while writing the VTK collection '" + pvdPath + "'");
+}
+
+void writePvd(const Mesh& mesh, const std::string& pvdPath, const std::vector<FieldInstant>& instants) {
+  std::string stem = pvdPath;
+  if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".pvd") stem.resize(stem.size() - 4);
+  std::vector<PvdEntry> entries;
   for (std::size_t k = 0; k < instants.size(); ++k) {
     const std::string vtu = stem + "_" + std::to_string(k) + ".vtu";
     writeVtu(mesh, vtu, instants[k].fields);
-    out << "<DataSet timestep=\"" << instants[k].time << "\" part=\"0\" file=\"" << baseName(vtu) << "\"/>\n";
+    entries.push_back({instants[k].time, baseName(vtu)});
   }
-  out << "</Collection>\n</VTKFile>\n";
+  writePvdCollection(pvdPath, entries);
 }
 
 }  // namespace aster::mesh

@@ -16,4 +16,11 @@ void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<Nodal
 // Writes <stem>_<k>.vtu per instant next to `pvdPath` and the collection file.
 void writePvd(const Mesh& mesh, const std::string& pvdPath, const std::vector<FieldInstant>& instants);
 
+// The collection file alone: one data set per instant, files named relative to it.
+struct PvdEntry {
+  double time = 0.0;
+  std::string file;
+};
+void writePvdCollection(const std::string& pvdPath, const std::vector<PvdEntry>& entries);
+
 }  // namespace aster::mesh
