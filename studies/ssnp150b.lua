@@ -12,8 +12,13 @@ ACIER = DEFI_MATERIAU{ELAS = {E = 1.0, NU = 0.0}}
 
 UX = FORMULE{VALE = '-0.2*Y**3*(X-0.5)', NOM_PARA = {'X', 'Y'}}
 UY = FORMULE{VALE = '-0.05*(X-0.5)**2*(1+Y) - 0.01*Y', NOM_PARA = {'X', 'Y'}}
+
+local nbmesh = 5
+local MA, h, errU, errP = {}, {}, {}, {}
+MA[0] = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
+
 MMS = CALC_SOLU_MANU{DEPL = {DX = UX, DY = UY}, MATER = ACIER, MODELISATION = 'D_PLAN',
-                     DEFORMATION = 'GREEN_LAGRANGE',
+                     DEFORMATION = 'GREEN_LAGRANGE', MAILLAGE = MA[0],  -- checks p <= 0 along BAS
                      BORD = {{NOM = 'DROITE', NORMALE = {1, 0}},
                              {NOM = 'GAUCHE', NORMALE = {-1, 0}},
                              {NOM = 'BAS', NORMALE = {0, -1}, CONTACT = 'OUI'}}}
@@ -22,10 +27,6 @@ PRES_EX = MMS.BAS.PRES  -- exact contact pressure p(X, Y) along BAS
 RAMPE = DEFI_FONCTION{NOM_PARA = 'INST', VALE = {0, 0, 1, 1},
                       PROL_GAUCHE = 'LINEAIRE', PROL_DROITE = 'LINEAIRE'}
 LINST = DEFI_LIST_REEL{DEBUT = 0.0, INTERVALLE = {JUSQU_A = 1.0, NOMBRE = 10}}
-
-local nbmesh = 5
-local MA, h, errU, errP = {}, {}, {}, {}
-MA[0] = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
 
 for i = 0, nbmesh - 1 do
   MA[i] = MODI_MAILLAGE{reuse = MA[i], MAILLAGE = MA[i],

@@ -117,7 +117,11 @@ ConceptPtr calcSoluManu(const Keywords& k, Session&, ConceptPtr) {
       g.push_back({"FX_T", formula(expr::manufacturedFunction(sol, Q::TangentialTraction, 0, N))});
       g.push_back({"FY_T", formula(expr::manufacturedFunction(sol, Q::TangentialTraction, 1, N))});
       g.push_back({"PRES", formula(expr::manufacturedFunction(sol, Q::ContactPressure, 0, N))});
-      if (mesh) checkContactConditions(*mesh, name, *sol, N.normalized(), k.integer("INFO") >= 1);
+      if (mesh)
+        checkContactConditions(*mesh, name, *sol, N.normalized(), k.integer("INFO") >= 1);
+      else
+        Messages::info("CALC_SOLU_MANU: " + bord.path + ": without MAILLAGE the contact condition p <= 0 is not "
+                       "checked along " + name + " (give MAILLAGE to check it)");
     }
   }
   return out;

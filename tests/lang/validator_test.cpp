@@ -219,3 +219,51 @@ TEST(Catalogue, BuiltinLoads) {
   ASSERT_NE(cat.find("DEBUT"), nullptr);
   ASSERT_NE(cat.find("FIN"), nullptr);
 }
+
+// A factor keyword with min = 2 and an AU_MOINS_UN rule, beside ESSAI.
+const char* kEssaiMinimum = R"(
+return PROC{ nom = 'ESSAI_MIN',
+  regles = { AU_MOINS_UN('TOUT', 'GROUP_MA') },
+  SIMP{ 'TOUT', typ = 'TXM', into = {'OUI'} },
+  SIMP{ 'GROUP_MA', typ = 'grma', max = '**' },
+  FACT{ 'POINT', statut = 'o', min = 2, max = '**',
+    SIMP{ 'X', statut = 'o', typ = 'R' },
+  },
+}
+)";
+
+std::string minimumRejection(const Keywords& call, std::string* keyword) {
+  static const Catalogue cat = Catalogue::fromSources({{"ESSAI_MIN", kEssaiMinimum}});
+  try {
+    validate(*cat.find("ESSAI_MIN"), call);
+  } catch (const ValidationError& e) {
+    *keyword = e.keyword;
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+Keywords points(int n) {
+  std::vector<Keywords> occ(n);
+  for (auto& o : occ) o.setSimple("X", {Value::ofReal(1.0)});
+  Keywords call;
+  call.setFactor("POINT", occ);
+  return call;
+}
+
+TEST(Validator, RejectsTooFewOccurrencesOfAFactorKeyword) {
+  Keywords call = points(1);
+  call.setSimple("TOUT", {Value::ofText("OUI")});
+  std::string keyword;
+  EXPECT_EQ(minimumRejection(call, &keyword), "factor keyword POINT is given 1 time; expected at least 2");
+  EXPECT_EQ(keyword, "POINT");
+  call = points(2);
+  call.setSimple("TOUT", {Value::ofText("OUI")});
+  EXPECT_EQ(minimumRejection(call, &keyword), "(accepted)");
+}
+
+TEST(Validator, RejectsACallWithNoneOfAnAuMoinsUnRule) {
+  std::string keyword;
+  const std::string why = minimumRejection(points(2), &keyword);
+  EXPECT_NE(why.find("at least one of TOUT, GROUP_MA is required"), std::string::npos) << why;
+}
