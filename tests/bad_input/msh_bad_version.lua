@@ -1,5 +1,5 @@
 -- expect-exit: 2
--- expect-output: <F> <LIRE_MAILLAGE> .*msh_bad_version\.lua:5: .*msh_bad_version\.msh: gmsh error: Unknown MSH file version 9\.1
+-- expect-output: <F> <LIRE_MAILLAGE> .*msh_bad_version\.lua:5: .*msh_bad_version\.msh:2: MSH version 9\.1 is not supported \(expected 2\.2, 4\.0 or 4\.1\)
 -- A GMSH file of an unsupported format version.
 DEBUT{}
 MA = LIRE_MAILLAGE{FORMAT = 'GMSH', UNITE = 20}

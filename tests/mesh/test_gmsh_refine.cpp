@@ -169,9 +169,42 @@ TEST(Refine, TrianglesAndLinearCellsShareEdgeNodes) {
   EXPECT_THROW(refineUniformly(bad), aster::Error);
 }
 
+namespace {
+std::vector<std::string> sortedNames(const Mesh& m, const std::vector<int>& items, bool cells) {
+  std::vector<std::string> out;
+  for (int i : items) out.push_back(cells ? m.cellName(i) : m.nodeName(i));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+std::vector<std::string> sorted(std::vector<std::string> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+// A cell by what it is, "QUAD4 N1 N2 N3 N4": MSH 2.2 renumbers the cells, not the nodes.
+std::vector<std::string> cellKeys(const Mesh& m, const std::vector<int>& cells) {
+  std::vector<std::string> out;
+  for (int c : cells) {
+    std::string key = cellTypeName(m.cellType(c));
+    for (int n : m.cellNodes(c)) key += " " + m.nodeName(n);
+    out.push_back(key);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+std::vector<int> allCells(const Mesh& m) {
+  std::vector<int> out(m.cellCount());
+  for (int c = 0; c < m.cellCount(); ++c) out[c] = c;
+  return out;
+}
+}  // namespace
+
 TEST(Gmsh, WriteReadRoundTripAllFormats) {
   Mesh m = readAsterMesh(kDir + "ssnp150b.mail");
   m = refineUniformly(m, m.cellGroup("SURFACE"));
+  // Overlapping groups: BAS (2 SEG3) is also in BAS_ET_SURF with the 4 QUAD8.
+  std::vector<int> both = m.cellGroup("BAS");
+  for (int c : m.cellGroup("SURFACE")) both.push_back(c);
+  m.addCellGroup("BAS_ET_SURF", both);
   for (double version : {2.2, 4.1})
     for (bool binary : {false, true}) {
       const std::string path = std::string(ASTER_BINARY_DIR) + "/mesh_roundtrip.msh";
@@ -179,26 +212,91 @@ TEST(Gmsh, WriteReadRoundTripAllFormats) {
       const Mesh r = readGmshMesh(path);
       ASSERT_EQ(r.nodeCount(), m.nodeCount()) << version << binary;
       ASSERT_EQ(r.cellCount(), m.cellCount());
-      for (int i = 0; i < m.nodeCount(); ++i) EXPECT_EQ((r.node(r.nodeIndex("N" + std::to_string(i + 1))) - m.node(i)).norm(), 0.0);
-      for (int c = 0; c < m.cellCount(); ++c) {
-        const int rc = r.cellIndex("M" + std::to_string(c + 1));
-        ASSERT_EQ(r.cellType(rc), m.cellType(c));
-        for (int k = 0; k < r.cellNodes(rc).size(); ++k)
-          EXPECT_EQ(r.nodeName(r.cellNodes(rc)[k]), "N" + std::to_string(m.cellNodes(c)[k] + 1));
-      }
-      auto names = r.cellGroupNames(), expected = m.cellGroupNames();
-      std::sort(names.begin(), names.end());
-      std::sort(expected.begin(), expected.end());
-      ASSERT_EQ(names, expected);
+      for (int i = 0; i < m.nodeCount(); ++i)
+        EXPECT_EQ((r.node(r.nodeIndex("N" + std::to_string(i + 1))) - m.node(i)).norm(), 0.0);
+      EXPECT_EQ(cellKeys(r, allCells(r)), cellKeys(m, allCells(m)));
+      if (version == 4.1)  // 4.1 keeps the cell tags
+        for (int c = 0; c < m.cellCount(); ++c) {
+          const int rc = r.cellIndex("M" + std::to_string(c + 1));
+          EXPECT_EQ(cellKeys(r, {rc}), cellKeys(m, {c}));
+        }
+      const auto expected = sorted(m.cellGroupNames());
+      ASSERT_EQ(expected.size(), 7u);
+      ASSERT_EQ(sorted(r.cellGroupNames()), expected);
+      // The reader makes one GROUP_NO per GROUP_MA: the nodes of its cells.
+      ASSERT_EQ(sorted(r.nodeGroupNames()), expected);
       for (const auto& g : expected) {
-        std::vector<std::string> a, b;
-        for (int c : m.cellGroup(g)) a.push_back("M" + std::to_string(c + 1));
-        for (int c : r.cellGroup(g)) b.push_back(r.cellName(c));
-        std::sort(a.begin(), a.end());
-        std::sort(b.begin(), b.end());
-        EXPECT_EQ(a, b) << g;
+        EXPECT_EQ(cellKeys(r, r.cellGroup(g)), cellKeys(m, m.cellGroup(g))) << g;
+        EXPECT_EQ(sortedNames(r, r.nodeGroup(g), false), sortedNames(m, m.nodesOfCells(m.cellGroup(g)), false)) << g;
+      }
+      // Hand-counted: BAS is 2 SEG3 on y = 0 (5 nodes), SURFACE 4 QUAD8 (21 nodes), MAITRE 1 SEG3.
+      EXPECT_EQ(r.nodeGroup("BAS").size(), 5u);
+      for (int n : r.nodeGroup("BAS")) EXPECT_EQ(r.node(n)[1], 0.0);
+      EXPECT_EQ(r.nodeGroup("SURFACE").size(), 21u);
+      EXPECT_EQ(r.nodeGroup("MAITRE").size(), 3u);
+      EXPECT_EQ(r.cellGroup("BAS_ET_SURF").size(), 6u);
+      EXPECT_EQ(r.nodeGroup("BAS_ET_SURF").size(), 21u);
+    }
+}
+
+TEST(Gmsh, UngroupedCellsAndPoi1SurviveARoundTrip) {
+  // The unit square: one QUAD4 in S, an ungrouped SEG2 on y = 0, a POI1 on
+  // (0, 0) in no group and a POI1 on (1, 1) in P.
+  Mesh m;
+  for (auto p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(0, 1, 0)})
+    m.addNode(p);
+  m.addCell(CellType::QUAD4, {0, 1, 2, 3});
+  m.addCell(CellType::SEG2, {0, 1});
+  m.addCell(CellType::POI1, {0});
+  m.addCell(CellType::POI1, {2});
+  m.addCellGroup("S", {0});
+  m.addCellGroup("P", {3});
+  for (double version : {2.2, 4.1})
+    for (bool binary : {false, true}) {
+      const std::string path = std::string(ASTER_BINARY_DIR) + "/mesh_poi1.msh";
+      writeGmshMesh(m, path, {version, binary});
+      const Mesh r = readGmshMesh(path);
+      ASSERT_EQ(r.cellCount(), 4) << version << binary;
+      EXPECT_EQ(cellKeys(r, allCells(r)),
+                (std::vector<std::string>{"POI1 N1", "POI1 N3", "QUAD4 N1 N2 N3 N4", "SEG2 N1 N2"}));
+      EXPECT_EQ(r.nodeCount(), 4);
+      // The reserved group is no GROUP_MA, and the groups stay exact (no SaveAll).
+      EXPECT_EQ(sorted(r.cellGroupNames()), (std::vector<std::string>{"P", "S"}));
+      EXPECT_EQ(sorted(r.nodeGroupNames()), (std::vector<std::string>{"P", "S"}));
+      EXPECT_EQ(cellKeys(r, r.cellGroup("P")), std::vector<std::string>{"POI1 N3"});
+      EXPECT_EQ(sortedNames(r, r.nodeGroup("P"), false), std::vector<std::string>{"N3"});
+      EXPECT_EQ(cellKeys(r, r.cellGroup("S")), std::vector<std::string>{"QUAD4 N1 N2 N3 N4"});
+      EXPECT_EQ(sortedNames(r, r.nodeGroup("S"), false), (std::vector<std::string>{"N1", "N2", "N3", "N4"}));
+      if (version == 4.1) {
+        EXPECT_EQ(cellKeys(r, {r.cellIndex("M3")}), std::vector<std::string>{"POI1 N1"});
+        EXPECT_EQ(cellKeys(r, {r.cellIndex("M4")}), std::vector<std::string>{"POI1 N3"});
+      }
+      if (!binary) {
+        std::ifstream in(path);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_NE(text.find(std::string("\"") + kGmshUngroupedName + "\""), std::string::npos);
       }
     }
+}
+
+TEST(Gmsh, PointsOfGmshOwnVerticesAreStillDropped) {
+  // As gmsh writes them: a point element on geometric vertex 1 (physical 0, i.e.
+  // none) and the QUAD4 of surface 1; then the same with the point in physical 5.
+  const std::string path = std::string(ASTER_BINARY_DIR) + "/mesh_gmsh_points.msh";
+  const std::string head =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n"
+      "$Elements\n2\n";
+  std::ofstream(path) << head << "1 15 2 0 1 1\n2 3 2 0 1 1 2 3 4\n$EndElements\n";
+  const Mesh r = readGmshMesh(path);
+  ASSERT_EQ(r.cellCount(), 1);
+  EXPECT_EQ(r.cellType(0), CellType::QUAD4);
+  EXPECT_TRUE(r.cellGroupNames().empty());
+  std::ofstream(path) << head << "1 15 2 5 1 1\n2 3 2 0 1 1 2 3 4\n$EndElements\n";
+  const Mesh g = readGmshMesh(path);
+  ASSERT_EQ(g.cellCount(), 2);
+  EXPECT_EQ(g.countCells(CellType::POI1), 1);
+  EXPECT_EQ(g.cellGroupNames(), std::vector<std::string>{"GM5"});
+  EXPECT_EQ(sortedNames(g, g.nodeGroup("GM5"), false), std::vector<std::string>{"N1"});
 }
 
 TEST(Gmsh, ResultsFileHoldsTheNodalFieldsPerInstant) {

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "mesh/io/msh_check.hpp"
 #include "mesh/node_ordering.hpp"
 
 namespace aster::mesh {
@@ -34,53 +35,25 @@ class GmshSession {
 };
 
 // gmsh reports errors to its logger (and sometimes throws): turn both into aster::Error.
-void checkGmsh(const std::string& context) {
+// `expected` ends the message ("" or " (expected ...)").
+void checkGmsh(const std::string& context, const std::string& expected = "") {
   std::string last;
   gmsh::logger::getLastError(last);
-  if (!last.empty()) throw Error(context + ": gmsh error: " + last);
+  if (!last.empty()) throw Error(context + ": gmsh error: " + last + expected);
 }
 
-int gmshType(CellType t) {
-  switch (t) {
-    case CellType::POI1: return 15;
-    case CellType::SEG2: return 1;
-    case CellType::SEG3: return 8;
-    case CellType::SEG4: return 26;
-    case CellType::TRIA3: return 2;
-    case CellType::TRIA6: return 9;
-    case CellType::QUAD4: return 3;
-    case CellType::QUAD8: return 16;
-    case CellType::QUAD9: return 10;
-    case CellType::TETRA4: return 4;
-    case CellType::TETRA10: return 11;
-    case CellType::PENTA6: return 6;
-    case CellType::PENTA15: return 18;
-    case CellType::PENTA18: return 13;
-    case CellType::PYRAM5: return 7;
-    case CellType::PYRAM13: return 19;
-    case CellType::HEXA8: return 5;
-    case CellType::HEXA20: return 17;
-    case CellType::HEXA27: return 12;
-    case CellType::TRIA7: break;
-  }
-  throw Error("cell type " + cellTypeName(t) + " cannot be written to gmsh (no 7-node triangle in gmsh)");
-}
-
-CellType asterType(int gmshElementType, const std::string& path) {
-  for (int t = 0; t < kCellTypeCount; ++t) {
-    const auto type = static_cast<CellType>(t);
-    if (type != CellType::TRIA7 && gmshType(type) == gmshElementType) return type;
-  }
+CellType asterType(int number, const std::string& path) {
+  if (const auto type = cellTypeOfGmshElement(number)) return *type;
   std::string name;
   int dim = 0, order = 0, nn = 0, nv = 0;
   std::vector<double> coords;
   try {
-    gmsh::model::mesh::getElementProperties(gmshElementType, name, dim, order, nn, coords, nv);
+    gmsh::model::mesh::getElementProperties(number, name, dim, order, nn, coords, nv);
   } catch (...) {
     name = "?";
   }
-  throw Error(path + ": gmsh element type " + std::to_string(gmshElementType) + " (" + name +
-              ") has no code_aster equivalent");
+  throw Error(path + ": gmsh element type " + std::to_string(number) + " (" + name +
+              ") has no code_aster equivalent (expected one of the gmsh types " + supportedGmshElementTypes() + ")");
 }
 
 bool hasExtension(const std::string& path, const std::string& ext) {
@@ -91,18 +64,25 @@ bool hasExtension(const std::string& path, const std::string& ext) {
 }
 
 Mesh readCurrentModel(const std::string& path) {
-  // Physical groups of each entity.
+  // Physical groups of each entity; the reserved group only marks entities to keep.
   gmsh::vectorpair physicals;
   gmsh::model::getPhysicalGroups(physicals);
   std::map<std::pair<int, int>, std::vector<std::string>> groupsOfEntity;
+  std::set<std::pair<int, int>> kept;
+  std::map<std::pair<int, int>, int> physicalCount;
   std::vector<std::string> groupOrder;
   for (const auto& [dim, tag] : physicals) {
     std::string name;
     gmsh::model::getPhysicalName(dim, tag, name);
-    if (name.empty()) name = "GM" + std::to_string(tag);
-    if (std::find(groupOrder.begin(), groupOrder.end(), name) == groupOrder.end()) groupOrder.push_back(name);
     std::vector<int> entities;
     gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    for (int e : entities) ++physicalCount[{dim, e}];
+    if (name == kGmshUngroupedName) {
+      for (int e : entities) kept.insert({dim, e});
+      continue;
+    }
+    if (name.empty()) name = "GM" + std::to_string(tag);
+    if (std::find(groupOrder.begin(), groupOrder.end(), name) == groupOrder.end()) groupOrder.push_back(name);
     for (int e : entities) groupsOfEntity[{dim, e}].push_back(name);
   }
 
@@ -118,10 +98,15 @@ Mesh readCurrentModel(const std::string& path) {
   gmsh::model::getEntities(entities);
   for (const auto& [dim, tag] : entities) {
     const auto groups = groupsOfEntity.find({dim, tag});
-    if (dim == 0 && groups == groupsOfEntity.end()) continue;
+    if (dim == 0 && groups == groupsOfEntity.end() && !kept.count({dim, tag})) continue;
     std::vector<int> types;
     std::vector<std::vector<std::size_t>> elementTags, nodeTags;
     gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, tag);
+    // MSH 2.2 has one physical tag per element line: gmsh writes an element of an
+    // entity in several physical groups once per group, under new numbers. Such
+    // copies (same entity, type and nodes) are one cell.
+    const bool copies = physicalCount[{dim, tag}] > 1;
+    std::set<std::pair<CellType, std::vector<std::size_t>>> seenInEntity;
     for (std::size_t k = 0; k < types.size(); ++k) {
       const CellType type = asterType(types[k], path);
       const int nn = nodeCount(type);
@@ -130,6 +115,7 @@ Mesh readCurrentModel(const std::string& path) {
         if (!seenCells.insert(elementTags[k][e]).second) continue;  // already met in another entity
         RawCell c{type, elementTags[k][e], std::vector<std::size_t>(nn)};
         for (int j = 0; j < nn; ++j) c.nodes[j] = nodeTags[k][e * nn + perm[j]];
+        if (copies && !seenInEntity.emplace(type, c.nodes).second) continue;
         if (groups != groupsOfEntity.end())
           for (const auto& g : groups->second) groupCells[g].push_back(static_cast<int>(cells.size()));
         cells.push_back(std::move(c));
@@ -178,12 +164,16 @@ Mesh readCurrentModel(const std::string& path) {
 
 Mesh readGmshMesh(const std::string& path, const GmshReadOptions& options) {
   if (!std::ifstream(path)) throw Error("cannot open the gmsh file '" + path + "'");
+  const bool script = hasExtension(path, ".geo");
+  if (!script) checkMshFile(path);
+  // gmsh's own message is kept; for a mesh file, say what aster-lite expected.
+  const std::string expected = script ? std::string() : std::string(" (expected ") + kMshExpected + ")";
   GmshSession session;
   try {
     for (const auto& [name, value] : options.numbers) gmsh::onelab::setNumber(name, {value});
     gmsh::open(path);
-    checkGmsh(path);
-    if (hasExtension(path, ".geo")) {
+    checkGmsh(path, expected);
+    if (script) {
       gmsh::model::mesh::generate(gmsh::model::getDimension());
       checkGmsh(path + " (meshing)");
     }
@@ -193,11 +183,11 @@ Mesh readGmshMesh(const std::string& path, const GmshReadOptions& options) {
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
-    throw Error(path + ": gmsh error: " + e.what());
+    throw Error(path + ": gmsh error: " + e.what() + expected);
   } catch (...) {
     std::string last;
     gmsh::logger::getLastError(last);
-    throw Error(path + ": gmsh error: " + (last.empty() ? std::string("unknown") : last));
+    throw Error(path + ": gmsh error: " + (last.empty() ? std::string("unknown") : last) + expected);
   }
 }
 
@@ -254,7 +244,7 @@ std::string buildModel(const Mesh& mesh) {
     std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> byType;
     for (int c : cellsOfEntity[tag]) {
       const CellType t = mesh.cellType(c);
-      auto& [tags, nodes] = byType[gmshType(t)];
+      auto& [tags, nodes] = byType[gmshElementType(t)];
       tags.push_back(static_cast<std::size_t>(c + 1));
       const auto n = mesh.cellNodes(c);
       const auto foreign = fromAsterOrder(NodeConvention::Gmsh, t, std::vector<int>(n.begin(), n.end()));
@@ -262,17 +252,25 @@ std::string buildModel(const Mesh& mesh) {
     }
     for (const auto& [type, data] : byType) gmsh::model::mesh::addElementsByType(tag, type, data.first, data.second);
   }
-  // Physical groups: one per group and dimension.
+  // Physical groups: one per group and dimension, plus the reserved one per
+  // dimension for the cells in no group (see the header).
+  auto addPhysical = [](const std::map<int, std::vector<int>>& entitiesByDim, const std::string& name) {
+    for (const auto& [dim, tags] : entitiesByDim) {
+      const int phys = gmsh::model::addPhysicalGroup(dim, tags);
+      gmsh::model::setPhysicalName(dim, phys, name);
+    }
+  };
   for (std::size_t g = 0; g < groupNames.size(); ++g) {
     std::map<int, std::vector<int>> entitiesByDim;
     for (const auto& [key, tag] : entityOf)
       if (std::find(key.second.begin(), key.second.end(), static_cast<int>(g)) != key.second.end())
         entitiesByDim[key.first].push_back(tag);
-    for (const auto& [dim, tags] : entitiesByDim) {
-      const int phys = gmsh::model::addPhysicalGroup(dim, tags);
-      gmsh::model::setPhysicalName(dim, phys, groupNames[g]);
-    }
+    addPhysical(entitiesByDim, groupNames[g]);
   }
+  std::map<int, std::vector<int>> ungrouped;
+  for (const auto& [key, tag] : entityOf)
+    if (key.second.empty()) ungrouped[key.first].push_back(tag);
+  addPhysical(ungrouped, kGmshUngroupedName);
   return model;
 }
 
@@ -307,16 +305,9 @@ void writeGmshResults(const Mesh& mesh, const std::string& path, const std::vect
   GmshSession session;
   try {
     setWriteOptions(options);
+    // Every cell is in a physical group (maybe the reserved one): no SaveAll,
+    // which would write MSH 2.2 elements without their physical groups.
     const std::string model = buildModel(mesh);
-    bool ungrouped = false;
-    {
-      std::vector<char> grouped(mesh.cellCount(), 0);
-      for (const auto& g : mesh.cellGroupNames())
-        for (int c : mesh.cellGroup(g)) grouped[c] = 1;
-      ungrouped = std::find(grouped.begin(), grouped.end(), 0) != grouped.end();
-    }
-    // Cells outside every physical group are only saved with SaveAll.
-    if (ungrouped) gmsh::option::setNumber("Mesh.SaveAll", 1);
     writeModel(path);
 
     std::vector<std::size_t> tags(mesh.nodeCount());

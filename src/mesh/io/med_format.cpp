@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -40,11 +42,29 @@ med_geometry_type medType(CellType t) {
   return MED_NONE;
 }
 
+const char* const kMedExpected = "expected a MED file written by Salome, code_aster or aster-lite";
+
+// A MED file is an HDF5 file, whose 8-byte signature MED files have at offset 0.
+// Checked before the MED library sees the file (it says only that it cannot open it).
+void checkHdf5Signature(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open the MED file '" + path + "'");
+  static const char kSignature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
+  char head[8] = {};
+  in.read(head, sizeof head);
+  if (in.gcount() != sizeof head || std::memcmp(head, kSignature, sizeof head) != 0)
+    throw Error(path + ": not a MED file (no HDF5 signature): " + kMedExpected);
+}
+
 // RAII on a MED file handle.
 class MedFile {
  public:
   MedFile(const std::string& path, med_access_mode mode) : path_(path) {
+    if (mode == MED_ACC_RDONLY) checkHdf5Signature(path);
     fid_ = MEDfileOpen(path.c_str(), mode);
+    if (fid_ < 0 && mode == MED_ACC_RDONLY)
+      throw Error(path + ": an HDF5 file that the MED library cannot open (not a MED file, or a MED version newer "
+                  "than 4.1): " + kMedExpected);
     if (fid_ < 0) throw Error("cannot open the MED file '" + path + "'");
   }
   ~MedFile() {
@@ -225,7 +245,8 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
   MedFile file(path, MED_ACC_RDONLY);
   const med_idt fid = file.id();
   const med_int meshes = MEDnMesh(fid);
-  if (meshes <= 0) throw Error(path + ": the MED file holds no mesh");
+  if (meshes < 0) file.check(-1, "counting the meshes");
+  if (meshes == 0) throw Error(path + ": the MED file holds no mesh (expected at least one unstructured mesh)");
   char name[MED_NAME_SIZE + 1] = {}, desc[MED_COMMENT_SIZE + 1] = {}, dtunit[MED_SNAME_SIZE + 1] = {};
   med_int sdim = 0, mdim = 0, nstep = 0;
   med_mesh_type mtype;
@@ -250,28 +271,33 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
     }
   }
   if (meshName.empty())
-    throw Error(path + ": no mesh called '" + wanted + "' in the MED file (meshes: " + [&] {
-      std::string s;
-      for (const auto& a : available) s += (s.empty() ? "" : ", ") + a;
-      return s;
-    }() + ")");
+    throw Error(path + ": no mesh called '" + wanted + "' in the MED file (expected one of the meshes present: " +
+                [&] {
+                  std::string s;
+                  for (const auto& a : available) s += (s.empty() ? "" : ", ") + a;
+                  return s;
+                }() +
+                ")");
   const char* mn = meshName.c_str();
+  const std::string of = " of mesh '" + meshName + "'";  // the MED object in messages
   med_bool changed, transformed;
   Mesh mesh;
   mesh.title = description;
   mesh.setSpaceDimension(static_cast<int>(sdim));
   const med_int nn = MEDmeshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE, MED_COORDINATE, MED_NO_CMODE,
                                     &changed, &transformed);
-  if (nn < 0) file.check(-1, "counting the nodes");
+  if (nn < 0) file.check(-1, "counting the nodes" + of);
   std::vector<med_float> xyz(static_cast<std::size_t>(nn) * sdim);
-  if (nn > 0) file.check(MEDmeshNodeCoordinateRd(fid, mn, MED_NO_DT, MED_NO_IT, MED_FULL_INTERLACE, xyz.data()), "reading coordinates");
+  if (nn > 0)
+    file.check(MEDmeshNodeCoordinateRd(fid, mn, MED_NO_DT, MED_NO_IT, MED_FULL_INTERLACE, xyz.data()),
+               "reading the coordinates" + of);
 
   auto readNames = [&](med_entity_type et, med_geometry_type gt, med_int count) {
     std::vector<std::string> names;
     const med_int has = MEDmeshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, MED_NAME, MED_NO_CMODE, &changed, &transformed);
     if (has <= 0) return names;
     std::vector<char> buf(static_cast<std::size_t>(count) * MED_SNAME_SIZE + 1);
-    file.check(MEDmeshEntityNameRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, buf.data()), "reading names");
+    file.check(MEDmeshEntityNameRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, buf.data()), "reading the names" + of);
     for (med_int k = 0; k < count; ++k) names.push_back(fixed(buf.data() + k * MED_SNAME_SIZE, MED_SNAME_SIZE));
     return names;
   };
@@ -280,7 +306,8 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
     const med_int has =
         MEDmeshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, MED_FAMILY_NUMBER, MED_NO_CMODE, &changed, &transformed);
     if (has > 0 && count > 0)
-      file.check(MEDmeshEntityFamilyNumberRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, fam.data()), "reading families");
+      file.check(MEDmeshEntityFamilyNumberRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, fam.data()),
+                 "reading the families" + of);
     return fam;
   };
 
@@ -306,7 +333,7 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
     std::vector<med_int> conn(static_cast<std::size_t>(count) * nnc);
     file.check(MEDmeshElementConnectivityRd(fid, mn, MED_NO_DT, MED_NO_IT, MED_CELL, mt, MED_NODAL, MED_FULL_INTERLACE,
                                             conn.data()),
-               "reading the " + cellTypeName(type) + " cells");
+               "reading the " + cellTypeName(type) + " cells" + of);
     const auto names = readNames(MED_CELL, mt, count);
     const auto fam = readFamilies(MED_CELL, mt, count);
     const auto& perm = asterFromForeign(NodeConvention::Med, type);
@@ -329,11 +356,11 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
   std::vector<std::string> nodeGroupOrder, cellGroupOrder;
   for (med_int f = 1; f <= nfam; ++f) {
     const med_int ng = MEDnFamilyGroup(fid, mn, f);
-    if (ng < 0) file.check(-1, "reading families");
+    if (ng < 0) file.check(-1, "reading the families" + of);
     char famName[MED_NAME_SIZE + 1] = {};
     med_int number = 0;
     std::vector<char> groups(static_cast<std::size_t>(ng) * MED_LNAME_SIZE + 1);
-    file.check(MEDfamilyInfo(fid, mn, f, famName, &number, groups.data()), "reading families");
+    file.check(MEDfamilyInfo(fid, mn, f, famName, &number, groups.data()), "reading the families" + of);
     auto& order = number > 0 ? nodeGroupOrder : cellGroupOrder;
     for (med_int g = 0; g < ng; ++g) {
       const std::string gname = fixed(groups.data() + g * MED_LNAME_SIZE, MED_LNAME_SIZE);

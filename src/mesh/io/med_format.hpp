@@ -11,6 +11,11 @@
 namespace aster::mesh {
 
 // Reads the mesh called `meshName` (the first mesh of the file when empty).
+// Errors name the file and what was expected: "<path>: not a MED file (no HDF5
+// signature): expected a MED file written by Salome, code_aster or aster-lite"
+// (checked before the MED library opens it, also by readMedNodalField), "<path>:
+// the MED file holds no mesh (...)", "<path>: no mesh called 'X' in the MED file
+// (expected one of the meshes present: A, B)", and the mesh of a failing MED call.
 Mesh readMedMesh(const std::string& path, const std::string& meshName = "");
 
 // Writes the mesh (and groups, names when they fit in 16 characters) to a new file.

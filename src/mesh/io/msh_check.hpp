@@ -1,0 +1,40 @@
+// aster-lite's own light check of a gmsh .msh file, made before the file is
+// handed to gmsh: gmsh reports a malformed file only as "Error loading", this
+// check says which line is wrong and what was expected. It does not parse the
+// mesh (gmsh does); it needs no gmsh library.
+#pragma once
+#include <optional>
+#include <string>
+
+#include "mesh/cell_type.hpp"
+
+namespace aster::mesh {
+
+// What aster-lite expects where a gmsh mesh file is read.
+inline constexpr const char* kMshExpected = "a gmsh .msh file, version 2.2 or 4.1";
+
+// Throws aster::Error "<path>:<line>: ..." (or "<path>: ..." for an empty file) when
+//  - the first non-empty line is not $MeshFormat, or it is not at the very start
+//    of the file (gmsh would read the file as a .geo script), or the next one is not
+//    "<version> <file-type> <data-size>" with version 2.2, 4.0 or 4.1, file type
+//    0 (ASCII) or 1 (binary) and data size 8; a binary file is checked no further;
+//  - (ASCII) a $Section is not closed by its $EndSection (the line given is the
+//    one of the section left open), an $EndSection closes another section or none;
+//  - (ASCII 2.2) the counts after $Nodes / $Elements do not match the lines that
+//    follow, a node line is not "<tag> <x> <y> <z>", an element line is not
+//    "<tag> <type> <ntags> <tags> <nodes>", its type has no code_aster
+//    equivalent, it has the wrong number of nodes or a node that $Nodes lacks;
+//  - (ASCII 4.1) the same for the entity blocks of $Nodes and $Elements.
+// Text between sections is skipped, as gmsh does, and so is every line of $Comments.
+// A section left open is reported before any error on the lines inside it (a
+// truncated file reads as such, not as a bad last line).
+void checkMshFile(const std::string& path);
+
+// gmsh element type numbers of the code_aster cell types (TRIA7 has none).
+std::optional<CellType> cellTypeOfGmshElement(int gmshElementType);
+// Throws aster::Error for TRIA7.
+int gmshElementType(CellType type);
+// "15 (POI1), 1 (SEG2), 8 (SEG3), ..." for messages.
+std::string supportedGmshElementTypes();
+
+}  // namespace aster::mesh
