@@ -137,7 +137,7 @@ class AsterParser {
     for (int t = 0; t < kCellTypeCount; ++t) known.push_back(cellTypeName(static_cast<CellType>(t)));
     const std::string hint = didYouMean(keyword, known);
     fail(line, "unknown section or cell type '" + keyword + "'" + (hint.empty() ? "" : ";" + hint) +
-                   " (expected TITRE, COOR_2D, COOR_3D, a cell type such as QUAD8, GROUP_MA, GROUP_NO or FIN)");
+                   " (expected TITRE, COOR_1D, COOR_2D, COOR_3D, a cell type such as QUAD8, GROUP_MA, GROUP_NO or FIN)");
   }
 
   // Options on the header line: NOM=... (groups), INFO=... (ignored).
