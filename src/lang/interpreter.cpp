@@ -573,6 +573,7 @@ int Interpreter::runFile(const std::string& path) {
 int Interpreter::runString(const std::string& code, const std::string& chunkName) {
   lua_State* L = state_->L;
   auto& lines = state_->sources[chunkName];
+  lines.clear();  // a chunk run again under the same name is read afresh
   std::istringstream text(code);
   for (std::string line; std::getline(text, line);) lines.push_back(line);
   int status = luaL_loadbuffer(L, code.data(), code.size(), chunkName.c_str());

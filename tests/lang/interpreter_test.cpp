@@ -1,6 +1,7 @@
 // The Lua layer: commands as globals, file:line in messages, FIN, plain Lua.
 #include <gtest/gtest.h>
 
+#include "core/interrupt.hpp"
 #include "lang/interpreter.hpp"
 
 using namespace aster::lang;
@@ -98,4 +99,16 @@ TEST(Interpreter, StudiesRunSandboxed) {
   r = run("os.execute('true')\n");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("attempt to call a nil value (field 'execute')"), std::string::npos) << r.err;
+}
+
+// Ctrl-C between two commands: the study stops before the next one, with exit
+// status 130 and a <F> that names the command it did not run.
+TEST(Interpreter, CtrlCStopsBeforeTheNextCommand) {
+  aster::interrupt::request();
+  const StudyRun r = run("print('before')\nDEBUT{}\nprint('after')\n");
+  aster::interrupt::clear();
+  EXPECT_EQ(r.status, kInterruptedStatus);
+  EXPECT_EQ(r.status, 130);
+  EXPECT_EQ(r.out, "before\n");
+  EXPECT_NE(r.err.find("<F> <DEBUT> etude.lua:2: interrupted (SIGINT) before DEBUT"), std::string::npos) << r.err;
 }
