@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/suggest.hpp"
+#include "mesh/io/words.hpp"
 
 namespace aster::mesh {
 
@@ -25,14 +26,6 @@ struct Token {
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return s;
-}
-
-std::vector<std::string> splitWords(const std::string& line) {
-  std::vector<std::string> words;
-  std::istringstream in(line);
-  std::string w;
-  while (in >> w) words.push_back(w);
-  return words;
 }
 
 struct PendingCell {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "mesh/io/words.hpp"
 
 namespace aster::mesh {
 
@@ -27,20 +28,6 @@ constexpr GmshPair kGmshTypes[] = {
     {CellType::QUAD9, 10},   {CellType::TETRA4, 4},   {CellType::TETRA10, 11}, {CellType::PENTA6, 6},
     {CellType::PENTA15, 18}, {CellType::PENTA18, 13}, {CellType::PYRAM5, 7},   {CellType::PYRAM13, 19},
     {CellType::HEXA8, 5},    {CellType::HEXA20, 17},  {CellType::HEXA27, 12}};
-
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
-
-std::vector<std::string> splitWords(const std::string& line) {
-  std::vector<std::string> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && isBlank(line[i])) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && !isBlank(line[i])) ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
-  return out;
-}
 
 // Text as it can go in a message: control and non-ASCII bytes escaped.
 std::string escaped(const std::string& text) {
