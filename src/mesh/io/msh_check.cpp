@@ -393,8 +393,8 @@ std::optional<CellType> cellTypeOfGmshElement(int gmshType) {
 int gmshElementType(CellType type) {
   for (const auto& p : kGmshTypes)
     if (p.type == type) return p.gmsh;
-  throw Error("cell type " + cellTypeName(type) + " cannot be written to gmsh (no " + std::to_string(nodeCount(type)) +
-              "-node " + (type == CellType::TRIA7 ? std::string("triangle") : cellTypeName(type)) + " in gmsh)");
+  // Only TRIA7 is missing from the table.
+  throw Error("cell type " + cellTypeName(type) + " cannot be written to gmsh (gmsh has no 7-node triangle)");
 }
 
 std::string supportedGmshElementTypes() {
