@@ -21,6 +21,7 @@
 #include "support/square_mesh.hpp"
 #include "expr/expression.hpp"
 #include "solver/blas_info.hpp"
+#include "solver/factor_memory.hpp"
 #include "solver/static_nonlinear.hpp"
 
 using namespace aster;
@@ -117,6 +118,7 @@ void run(int N, const std::string& method) {
 
 int main(int argc, char** argv) {
   solver::selectBlasKernels(argv);
+  solver::keepFactorWorkspaces();
   std::vector<int> sizes;
   std::string method = "CHOLMOD";
   int dgemmSize = 0;

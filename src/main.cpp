@@ -13,6 +13,7 @@
 #include "lang/interpreter.hpp"
 #include "lang/session.hpp"
 #include "solver/blas_info.hpp"
+#include "solver/factor_memory.hpp"
 
 namespace {
 
@@ -44,6 +45,7 @@ int usageError(const std::string& what) {
 
 int main(int argc, char** argv) {
   aster::solver::selectBlasKernels(argv);
+  aster::solver::keepFactorWorkspaces();
   namespace fs = std::filesystem;
   aster::lang::Session session;
   std::string study, outputDir;

@@ -1,5 +1,6 @@
 #include "mesh/io/vtk_format.hpp"
 
+#include <charconv>
 #include <fstream>
 #include <iomanip>
 
@@ -36,6 +37,15 @@ int vtkType(CellType t) {
   return 0;
 }
 
+// The shortest text that reads back as the same double (std::to_chars): a study
+// writes every converged instant, and iostream formatting was most of that time.
+void appendNumber(std::string& out, double v) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+  out.append(buffer, end);
+  out += ' ';
+}
+
 std::string baseName(const std::string& path) {
   const auto slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);
@@ -50,7 +60,6 @@ void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<Nodal
                   std::to_string(mesh.nodeCount()) + " nodes x " + std::to_string(f.components.size()) + " components");
   std::ofstream out(path);
   if (!out) throw Error("cannot write the VTK file '" + path + "'");
-  out << std::setprecision(16);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
       << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << mesh.nodeCount() << "\" NumberOfCells=\"" << mesh.cellCount()
       << "\">\n<PointData>\n";
@@ -60,18 +69,22 @@ void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<Nodal
     out << "<DataArray type=\"Float64\" Name=\"" << f.name << "\" NumberOfComponents=\"" << width << "\"";
     for (int k = 0; k < nc; ++k) out << " ComponentName" << k << "=\"" << f.components[k] << "\"";
     out << " format=\"ascii\">\n";
+    std::string text;
     for (int i = 0; i < mesh.nodeCount(); ++i) {
-      for (int k = 0; k < nc; ++k) out << f.values[static_cast<std::size_t>(i) * nc + k] << " ";
-      if (nc == 2) out << "0 ";
-      out << "\n";
+      for (int k = 0; k < nc; ++k) appendNumber(text, f.values[static_cast<std::size_t>(i) * nc + k]);
+      if (nc == 2) text += "0 ";
+      text += '\n';
     }
-    out << "</DataArray>\n";
+    out << text << "</DataArray>\n";
   }
   out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  std::string points;
   for (int i = 0; i < mesh.nodeCount(); ++i) {
     const auto x = mesh.node(i);
-    out << x[0] << " " << x[1] << " " << x[2] << "\n";
+    for (int k = 0; k < 3; ++k) appendNumber(points, x[k]);
+    points += '\n';
   }
+  out << points;
   out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (int c = 0; c < mesh.cellCount(); ++c) {
     const auto n = mesh.cellNodes(c);
