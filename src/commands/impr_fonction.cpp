@@ -1,12 +1,16 @@
 // IMPR_FONCTION: curves (functions, or explicit abscissas and ordinates) as
 // columns of values (TABLEAU), or plotted to PNG / SVG by gnuplot, run as a
 // process on a generated script and data files kept in the output folder.
+// The command writes the script and the data; one gnuplot draws every plot of
+// the run at its end (Session::plots), whatever ends it.
 // PENTE='OUI' adds each curve's least-squares slope of log y against log x to its
 // legend (convergence rates).
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -111,20 +115,56 @@ std::string findProgram(const std::string& name) {
   return "";
 }
 
-void runGnuplot(const std::filesystem::path& script) {
-  const std::string exe = findProgram("gnuplot");
-  if (exe.empty())
-    throw Error("FORMAT='PNG'/'SVG' runs gnuplot, which is not installed (Debian/Ubuntu: apt-get install gnuplot-nox); "
-                "the script is " + script.string());
-  std::string a0 = exe, a1 = script.string();
-  char* argv[] = {a0.data(), a1.data(), nullptr};
+// Runs gnuplot on the scripts, in order; true when it exits with status 0.
+bool runGnuplot(const std::string& exe, const std::vector<std::filesystem::path>& scripts, bool showMessages) {
+  std::vector<std::string> args{exe};
+  for (const auto& s : scripts) args.push_back(s.string());
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (!showMessages) posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
   pid_t pid;
-  if (posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv, environ) != 0)
-    throw Error("cannot start " + exe);
+  const int spawned = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return false;
   int status = 0;
-  waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw Error("gnuplot failed on " + script.string() + " (see its messages above)");
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return false;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+// All plots in one gnuplot (each script starts with `reset session`); when that
+// fails, each script alone, to say which ones gnuplot could not draw (and show
+// gnuplot's messages once, for those).
+std::vector<std::string> drawPlots(const std::vector<Session::PlotScript>& plots) {
+  const std::string exe = findProgram("gnuplot");
+  std::vector<std::string> failures;
+  auto fail = [&](const Session::PlotScript& p, const std::string& why) {
+    failures.push_back("<F> <" + p.where + ": " + why + " (script " + p.script.string() + ")");
+  };
+  std::vector<std::filesystem::path> scripts;
+  for (const auto& p : plots) scripts.push_back(p.script);
+  const bool together = !exe.empty() && runGnuplot(exe, scripts, false);
+  for (const auto& p : plots) {
+    if (exe.empty()) {
+      fail(p, "gnuplot is no longer on the PATH");
+      continue;
+    }
+    if (!together && !runGnuplot(exe, {p.script}, true)) {
+      std::error_code ec;
+      std::filesystem::remove(p.image, ec);  // what gnuplot left is no plot
+      fail(p, "gnuplot failed (see its messages above)");
+      continue;
+    }
+    std::error_code ec;
+    if (std::filesystem::file_size(p.image, ec) == 0 || ec)
+      fail(p, "gnuplot wrote no image " + p.image.string());
+    else
+      Messages::info("IMPR_FONCTION: plot written to " + p.image.string());
+  }
+  return failures;
 }
 
 ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
@@ -172,6 +212,7 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   const std::string stem = image.stem().string();
   const auto dir = session.outputFile("");
   std::ostringstream gp;
+  gp << "reset session\n";  // the scripts of a run are drawn by one gnuplot, one after the other
   gp << "set terminal " << (format == "PNG" ? "pngcairo" : "svg") << " size 900,650 noenhanced font 'Sans,11'\n";
   gp << "set output " << quoted(std::filesystem::absolute(image).string()) << "\n";
   std::string title = k.text("TITRE", "");
@@ -201,15 +242,21 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
     if (line && c.style > 1) gp << " dashtype " << c.style;
     gp << " linewidth 2 title " << quoted(c.legend.empty() ? "courbe " + std::to_string(i + 1) : c.legend);
   }
-  gp << "\n";
+  gp << "\nunset output\n";  // closes the image before the next script opens its own
   const auto script = dir / (stem + ".gp");
   {
     std::ofstream s(script);
     s << gp.str();
     if (!s) throw Error("cannot write " + script.string());
   }
-  runGnuplot(script);
-  Messages::info("IMPR_FONCTION: plot written to " + image.string());
+  if (findProgram("gnuplot").empty())
+    throw Error("FORMAT='PNG'/'SVG' runs gnuplot, which is not installed (Debian/Ubuntu: apt-get install gnuplot-nox); "
+                "the script is " + script.string());
+  std::error_code ec;
+  std::filesystem::remove(image, ec);  // an image left by an earlier run must not pass for this one
+  session.plots.push_back({script, image, "IMPR_FONCTION> " + session.where});
+  session.drawPlots = drawPlots;
+  Messages::info("IMPR_FONCTION: " + image.string() + " will be drawn by gnuplot at the end of the run");
   return nullptr;
 }
 

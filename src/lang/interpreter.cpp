@@ -606,10 +606,16 @@ int Interpreter::runString(const std::string& code, const std::string& chunkName
 }
 
 int Interpreter::finish(int status) {
-  const int total = session_.checksOk + session_.checksNook;
-  if (total > 0)
-    Messages::info("<I> checks: " + std::to_string(session_.checksOk) + " OK, " +
-                   std::to_string(session_.checksNook) + " NOOK");
+  if (!session_.plots.empty() && session_.drawPlots) {
+    const auto failures = session_.drawPlots(session_.plots);
+    session_.plots.clear();
+    std::fflush(stdout);
+    for (const auto& f : failures) std::fprintf(stderr, "%s\n", f.c_str());
+    std::fflush(stderr);
+    if (!failures.empty() && status == 0) status = 2;
+  }
+  const std::string summary = session_.recordCheckSummary();
+  if (!summary.empty()) Messages::info(summary);
   if (status == 0 && session_.checksNook > 0) return 1;
   return status;
 }

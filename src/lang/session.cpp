@@ -50,4 +50,15 @@ void Session::recordCheck(const std::string& block, bool ok) {
   if (!out) throw Error("cannot write " + path.string());
 }
 
+std::string Session::recordCheckSummary() {
+  const int total = checksOk + checksNook;
+  if (total == 0) return "";
+  const std::string line =
+      "<I> checks: " + std::to_string(checksOk) + " OK, " + std::to_string(checksNook) + " NOOK";
+  const auto path = outputFile(resuPath().filename().string());
+  std::ofstream out(path, std::ios::app);
+  out << "\n" << line << "\n";
+  return line;
+}
+
 }  // namespace aster::lang

@@ -36,6 +36,20 @@ struct Session {
   int checksNook = 0;
   // Prints a check block, appends it to the .resu file, counts it.
   void recordCheck(const std::string& block, bool ok);
+  // The closing line of the checks ("<I> checks: 3 OK, 0 NOOK"), printed and
+  // appended to the .resu file at the end of the run; empty when there were none.
+  std::string recordCheckSummary();
+
+  // Plots whose gnuplot scripts IMPR_FONCTION wrote: one gnuplot draws them all
+  // at the end of the run, however it ends (FIN, <F>, Ctrl-C), so its start-up
+  // (0.2 s, most of a small study's time) is paid once, not once per plot.
+  struct PlotScript {
+    std::filesystem::path script, image;
+    std::string where;  // "IMPR_FONCTION" and file:line, for messages
+  };
+  std::vector<PlotScript> plots;
+  // Set by IMPR_FONCTION: draws `plots`, returns one message per plot it could not draw.
+  std::function<std::vector<std::string>(const std::vector<PlotScript>&)> drawPlots;
   std::filesystem::path resuPath() const;
 
   // The study's name for a concept ("MAIL"), or a generated one: set by the interpreter.
