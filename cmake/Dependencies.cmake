@@ -24,12 +24,23 @@ add_library(lua54 INTERFACE)
 target_include_directories(lua54 INTERFACE ${LUA_INCLUDE_DIR})
 target_link_libraries(lua54 INTERFACE ${LUA_LIB} m dl)
 
-find_path(GMSH_INCLUDE_DIR gmsh.h)
+# aster-lite loads libgmsh on first use (src/mesh/io/gmsh_library.cpp), by the
+# soname of the library found here: gmshapi has the headers and dlopen only.
+# gmshlib links the library, for tests calling gmsh's C++ API themselves.
+find_path(GMSH_INCLUDE_DIR gmshc.h)
 find_library(GMSH_LIB gmsh)
 if(GMSH_INCLUDE_DIR AND GMSH_LIB)
+  set(GMSH_SONAME libgmsh.so)
+  execute_process(COMMAND ${CMAKE_OBJDUMP} -p ${GMSH_LIB} OUTPUT_VARIABLE gmsh_headers ERROR_QUIET)
+  if(gmsh_headers MATCHES "SONAME +([^ \n]+)")
+    set(GMSH_SONAME ${CMAKE_MATCH_1})
+  endif()
+  message(STATUS "gmsh, loaded on first use: ${GMSH_SONAME}")
   add_library(gmshapi INTERFACE)
   target_include_directories(gmshapi INTERFACE ${GMSH_INCLUDE_DIR})
-  target_link_libraries(gmshapi INTERFACE ${GMSH_LIB})
+  target_link_libraries(gmshapi INTERFACE ${CMAKE_DL_LIBS})
+  add_library(gmshlib INTERFACE)
+  target_link_libraries(gmshlib INTERFACE gmshapi ${GMSH_LIB})
 endif()
 
 find_path(MED_INCLUDE_DIR med.h)

@@ -1,15 +1,15 @@
 #include "mesh/io/gmsh_format.hpp"
 
-#include <gmsh.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
+#include <type_traits>
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "mesh/io/gmsh_library.hpp"
 #include "mesh/io/msh_check.hpp"
 #include "mesh/node_ordering.hpp"
 
@@ -17,38 +17,160 @@ namespace aster::mesh {
 
 namespace {
 
+// What gmsh's C++ API threw: gmsh's C API sets its last argument (ierr) instead.
+// The callers' catch (...) then reports gmsh's last error.
+struct GmshFailed {};
+
+// Calls a function of gmsh's C API, adding its ierr argument.
+template <typename Function, typename... Args>
+auto call(Function function, Args... args) {
+  int ierr = 0;
+  if constexpr (std::is_void_v<decltype(function(args..., &ierr))>) {
+    function(args..., &ierr);
+    if (ierr) throw GmshFailed{};
+  } else {
+    const auto result = function(args..., &ierr);
+    if (ierr) throw GmshFailed{};
+    return result;
+  }
+}
+
+// The C API takes its input arrays as non-const pointers; it does not write to them.
+template <typename T>
+T* input(const std::vector<T>& v) {
+  return const_cast<T*>(v.data());
+}
+
+// Copies an array gmsh returned and frees it (it was allocated by gmsh).
+template <typename T>
+std::vector<T> take(T* data, std::size_t size) {
+  std::vector<T> v(data, data + size);
+  gmshLibrary().Free(data);
+  return v;
+}
+
+std::string take(char* text) {
+  std::string s = text ? text : "";
+  gmshLibrary().Free(text);
+  return s;
+}
+
+std::vector<std::pair<int, int>> takeDimTags(int* data, std::size_t size) {
+  const auto flat = take(data, size);
+  std::vector<std::pair<int, int>> dimTags;
+  for (std::size_t i = 0; i + 1 < flat.size(); i += 2) dimTags.emplace_back(flat[i], flat[i + 1]);
+  return dimTags;
+}
+
+std::vector<std::vector<std::size_t>> take(std::size_t** data, std::size_t* sizes, std::size_t count) {
+  std::vector<std::vector<std::size_t>> v;
+  for (std::size_t k = 0; k < count; ++k) v.push_back(take(data[k], sizes[k]));
+  gmshLibrary().Free(data);
+  gmshLibrary().Free(sizes);
+  return v;
+}
+
+std::string lastError() {
+  char* text = nullptr;
+  int ierr = 0;
+  gmshLibrary().LoggerGetLastError(&text, &ierr);
+  return take(text);
+}
+
+// The getters of gmsh's C++ API that the reader uses, over the C API.
+std::vector<std::pair<int, int>> getPhysicalGroups() {
+  int* dimTags = nullptr;
+  std::size_t size = 0;
+  call(gmshLibrary().ModelGetPhysicalGroups, &dimTags, &size, -1);
+  return takeDimTags(dimTags, size);
+}
+
+std::string getPhysicalName(int dim, int tag) {
+  char* name = nullptr;
+  call(gmshLibrary().ModelGetPhysicalName, dim, tag, &name);
+  return take(name);
+}
+
+std::vector<int> getEntitiesForPhysicalGroup(int dim, int tag) {
+  int* tags = nullptr;
+  std::size_t size = 0;
+  call(gmshLibrary().ModelGetEntitiesForPhysicalGroup, dim, tag, &tags, &size);
+  return take(tags, size);
+}
+
+std::vector<std::pair<int, int>> getEntities() {
+  int* dimTags = nullptr;
+  std::size_t size = 0;
+  call(gmshLibrary().ModelGetEntities, &dimTags, &size, -1);
+  return takeDimTags(dimTags, size);
+}
+
+// Per element type: its number, the tags of its elements and their nodes.
+struct Elements {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, nodeTags;
+};
+
+Elements getElements(int dim, int tag) {
+  int* types = nullptr;
+  std::size_t typeCount = 0;
+  std::size_t **tags = nullptr, **nodeTags = nullptr;
+  std::size_t *tagSizes = nullptr, *nodeTagSizes = nullptr;
+  std::size_t tagLists = 0, nodeTagLists = 0;
+  call(gmshLibrary().ModelMeshGetElements, &types, &typeCount, &tags, &tagSizes, &tagLists, &nodeTags, &nodeTagSizes,
+       &nodeTagLists, dim, tag);
+  return {take(types, typeCount), take(tags, tagSizes, tagLists), take(nodeTags, nodeTagSizes, nodeTagLists)};
+}
+
+// Every node of the model: tags and coordinates (x y z per node).
+std::pair<std::vector<std::size_t>, std::vector<double>> getNodes() {
+  std::size_t* tags = nullptr;
+  double *coords = nullptr, *parametric = nullptr;
+  std::size_t tagSize = 0, coordSize = 0, parametricSize = 0;
+  call(gmshLibrary().ModelMeshGetNodes, &tags, &tagSize, &coords, &coordSize, &parametric, &parametricSize, -1, -1, 0,
+       0);
+  take(parametric, parametricSize);  // not asked for, freed
+  return {take(tags, tagSize), take(coords, coordSize)};
+}
+
 // One gmsh session per call: gmsh keeps global state, it must not leak between calls.
+// Its constructor loads libgmsh (gmsh_library.hpp) the first time.
 class GmshSession {
  public:
   GmshSession() {
-    gmsh::initialize();
-    gmsh::option::setNumber("General.Terminal", 0);
+    call(gmshLibrary().Initialize, 0, nullptr, 1);  // no arguments, read gmsh's config files (C++ defaults)
+    call(gmshLibrary().OptionSetNumber, "General.Terminal", 0.0);
   }
   ~GmshSession() {
-    try {
-      gmsh::finalize();
-    } catch (...) {
-    }
+    int ierr = 0;
+    gmshLibrary().Finalize(&ierr);  // a failure to clean up is not the study's concern
   }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 };
 
-// gmsh reports errors to its logger (and sometimes throws): turn both into aster::Error.
+// gmsh reports errors to its logger (and sometimes fails): turn both into aster::Error.
 // `expected` ends the message ("" or " (expected ...)").
 void checkGmsh(const std::string& context, const std::string& expected = "") {
-  std::string last;
-  gmsh::logger::getLastError(last);
+  const std::string last = lastError();
   if (!last.empty()) throw Error(context + ": gmsh error: " + last + expected);
+}
+
+std::string elementName(int number) {
+  char* name = nullptr;
+  int dim = 0, order = 0, nn = 0, nv = 0;
+  double* coords = nullptr;
+  std::size_t size = 0;
+  call(gmshLibrary().ModelMeshGetElementProperties, number, &name, &dim, &order, &nn, &coords, &size, &nv);
+  take(coords, size);  // not needed, freed
+  return take(name);
 }
 
 CellType asterType(int number, const std::string& path) {
   if (const auto type = cellTypeOfGmshElement(number)) return *type;
   std::string name;
-  int dim = 0, order = 0, nn = 0, nv = 0;
-  std::vector<double> coords;
   try {
-    gmsh::model::mesh::getElementProperties(number, name, dim, order, nn, coords, nv);
+    name = elementName(number);
   } catch (...) {
     name = "?";
   }
@@ -65,17 +187,14 @@ bool hasExtension(const std::string& path, const std::string& ext) {
 
 Mesh readCurrentModel(const std::string& path) {
   // Physical groups of each entity; the reserved group only marks entities to keep.
-  gmsh::vectorpair physicals;
-  gmsh::model::getPhysicalGroups(physicals);
+  const auto physicals = getPhysicalGroups();
   std::map<std::pair<int, int>, std::vector<std::string>> groupsOfEntity;
   std::set<std::pair<int, int>> kept;
   std::map<std::pair<int, int>, int> physicalCount;
   std::vector<std::string> groupOrder;
   for (const auto& [dim, tag] : physicals) {
-    std::string name;
-    gmsh::model::getPhysicalName(dim, tag, name);
-    std::vector<int> entities;
-    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    std::string name = getPhysicalName(dim, tag);
+    const std::vector<int> entities = getEntitiesForPhysicalGroup(dim, tag);
     for (int e : entities) ++physicalCount[{dim, e}];
     if (name == kGmshUngroupedName) {
       for (int e : entities) kept.insert({dim, e});
@@ -94,14 +213,11 @@ Mesh readCurrentModel(const std::string& path) {
   std::vector<RawCell> cells;
   std::map<std::string, std::vector<int>> groupCells;
   std::set<std::size_t> seenCells;
-  gmsh::vectorpair entities;
-  gmsh::model::getEntities(entities);
+  const auto entities = getEntities();
   for (const auto& [dim, tag] : entities) {
     const auto groups = groupsOfEntity.find({dim, tag});
     if (dim == 0 && groups == groupsOfEntity.end() && !kept.count({dim, tag})) continue;
-    std::vector<int> types;
-    std::vector<std::vector<std::size_t>> elementTags, nodeTags;
-    gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, tag);
+    const auto [types, elementTags, nodeTags] = getElements(dim, tag);
     // MSH 2.2 has one physical tag per element line: gmsh writes an element of an
     // entity in several physical groups once per group, under new numbers. Such
     // copies (same entity, type and nodes) are one cell.
@@ -123,9 +239,7 @@ Mesh readCurrentModel(const std::string& path) {
     }
   }
 
-  std::vector<std::size_t> nodeTags;
-  std::vector<double> coords, parametric;
-  gmsh::model::mesh::getNodes(nodeTags, coords, parametric, -1, -1, false, false);
+  const auto [nodeTags, coords] = getNodes();
   std::unordered_map<std::size_t, std::size_t> position;
   for (std::size_t i = 0; i < nodeTags.size(); ++i) position[nodeTags[i]] = i;
   std::set<std::size_t> used;
@@ -170,11 +284,14 @@ Mesh readGmshMesh(const std::string& path, const GmshReadOptions& options) {
   const std::string expected = script ? std::string() : std::string(" (expected ") + kMshExpected + ")";
   GmshSession session;
   try {
-    for (const auto& [name, value] : options.numbers) gmsh::onelab::setNumber(name, {value});
-    gmsh::open(path);
+    for (const auto& [name, value] : options.numbers) {
+      double v = value;
+      call(gmshLibrary().OnelabSetNumber, name.c_str(), &v, std::size_t{1});
+    }
+    call(gmshLibrary().Open, path.c_str());
     checkGmsh(path, expected);
     if (script) {
-      gmsh::model::mesh::generate(gmsh::model::getDimension());
+      call(gmshLibrary().ModelMeshGenerate, call(gmshLibrary().ModelGetDimension));
       checkGmsh(path + " (meshing)");
     }
     Mesh mesh = readCurrentModel(path);
@@ -185,8 +302,7 @@ Mesh readGmshMesh(const std::string& path, const GmshReadOptions& options) {
   } catch (const std::exception& e) {
     throw Error(path + ": gmsh error: " + e.what() + expected);
   } catch (...) {
-    std::string last;
-    gmsh::logger::getLastError(last);
+    const std::string last = lastError();
     throw Error(path + ": gmsh error: " + (last.empty() ? std::string("unknown") : last) + expected);
   }
 }
@@ -197,7 +313,7 @@ namespace {
 // groups) so that overlapping groups stay exact; returns the model name.
 std::string buildModel(const Mesh& mesh) {
   const std::string model = "aster";
-  gmsh::model::add(model);
+  call(gmshLibrary().ModelAdd, model.c_str());
   const auto groupNames = mesh.cellGroupNames();
   std::vector<std::vector<int>> groupsOfCell(mesh.cellCount());
   for (std::size_t g = 0; g < groupNames.size(); ++g)
@@ -216,7 +332,7 @@ std::string buildModel(const Mesh& mesh) {
     if (it == entityOf.end()) {
       // Tags unique across dimensions: gmsh's MSH 2.2 writer duplicates elements otherwise.
       const int tag = static_cast<int>(entityOrder.size()) + 1;
-      gmsh::model::addDiscreteEntity(dim, tag);
+      call(gmshLibrary().ModelAddDiscreteEntity, dim, tag, nullptr, std::size_t{0});
       it = entityOf.emplace(std::make_pair(dim, key), tag).first;
       entityOrder.emplace_back(dim, tag);
     }
@@ -225,7 +341,7 @@ std::string buildModel(const Mesh& mesh) {
   // All nodes on one entity (gmsh only needs them classified somewhere).
   int nodeDim = 0, nodeEntity = 0;
   if (entityOrder.empty()) {
-    nodeEntity = gmsh::model::addDiscreteEntity(0);
+    nodeEntity = call(gmshLibrary().ModelAddDiscreteEntity, 0, -1, nullptr, std::size_t{0});
   } else {
     for (const auto& [d, t] : entityOrder)
       if (d >= nodeDim) nodeDim = d, nodeEntity = t;
@@ -238,7 +354,9 @@ std::string buildModel(const Mesh& mesh) {
   }
   std::vector<std::size_t> nodeTags(mesh.nodeCount());
   for (int i = 0; i < mesh.nodeCount(); ++i) nodeTags[i] = static_cast<std::size_t>(i + 1);
-  gmsh::model::mesh::addNodes(nodeDim, nodeEntity, nodeTags, mesh.coordinates());
+  const auto& coords = mesh.coordinates();
+  call(gmshLibrary().ModelMeshAddNodes, nodeDim, nodeEntity, input(nodeTags), nodeTags.size(), input(coords),
+       coords.size(), nullptr, std::size_t{0});
 
   for (const auto& [dim, tag] : entityOrder) {
     std::map<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> byType;
@@ -250,14 +368,16 @@ std::string buildModel(const Mesh& mesh) {
       const auto foreign = fromAsterOrder(NodeConvention::Gmsh, t, std::vector<int>(n.begin(), n.end()));
       for (int k : foreign) nodes.push_back(static_cast<std::size_t>(k + 1));
     }
-    for (const auto& [type, data] : byType) gmsh::model::mesh::addElementsByType(tag, type, data.first, data.second);
+    for (const auto& [type, data] : byType)
+      call(gmshLibrary().ModelMeshAddElementsByType, tag, type, input(data.first), data.first.size(),
+           input(data.second), data.second.size());
   }
   // Physical groups: one per group and dimension, plus the reserved one per
   // dimension for the cells in no group (see the header).
   auto addPhysical = [](const std::map<int, std::vector<int>>& entitiesByDim, const std::string& name) {
     for (const auto& [dim, tags] : entitiesByDim) {
-      const int phys = gmsh::model::addPhysicalGroup(dim, tags);
-      gmsh::model::setPhysicalName(dim, phys, name);
+      const int phys = call(gmshLibrary().ModelAddPhysicalGroup, dim, input(tags), tags.size(), -1);
+      call(gmshLibrary().ModelSetPhysicalName, dim, phys, name.c_str());
     }
   };
   for (std::size_t g = 0; g < groupNames.size(); ++g) {
@@ -277,13 +397,13 @@ std::string buildModel(const Mesh& mesh) {
 void setWriteOptions(const GmshWriteOptions& options) {
   if (options.version != 2.2 && options.version != 4.1)
     throw Error("gmsh writer: MSH version must be 2.2 or 4.1, got " + std::to_string(options.version));
-  gmsh::option::setNumber("Mesh.MshFileVersion", options.version);
-  gmsh::option::setNumber("Mesh.Binary", options.binary ? 1 : 0);
-  gmsh::option::setNumber("Mesh.SaveAll", 0);
+  call(gmshLibrary().OptionSetNumber, "Mesh.MshFileVersion", options.version);
+  call(gmshLibrary().OptionSetNumber, "Mesh.Binary", options.binary ? 1.0 : 0.0);
+  call(gmshLibrary().OptionSetNumber, "Mesh.SaveAll", 0.0);
 }
 
 void writeModel(const std::string& path) {
-  gmsh::write(path);
+  call(gmshLibrary().Write, path.c_str());
   checkGmsh("writing " + path);
 }
 
@@ -319,11 +439,12 @@ void writeGmshResults(const Mesh& mesh, const std::string& path, const std::vect
         const int nc = static_cast<int>(f.components.size());
         auto addView = [&](const std::string& name, int width, auto value) {
           auto it = views.find(name);
-          if (it == views.end()) it = views.emplace(name, gmsh::view::add(name)).first;
+          if (it == views.end()) it = views.emplace(name, call(gmshLibrary().ViewAdd, name.c_str(), -1)).first;
           std::vector<double> data(static_cast<std::size_t>(mesh.nodeCount()) * width, 0.0);
           for (int i = 0; i < mesh.nodeCount(); ++i)
             for (int k = 0; k < width; ++k) data[static_cast<std::size_t>(i) * width + k] = value(i, k);
-          gmsh::view::addHomogeneousModelData(it->second, step, model, "NodeData", tags, data, inst.time, width);
+          call(gmshLibrary().ViewAddHomogeneousModelData, it->second, step, model.c_str(), "NodeData", input(tags),
+               tags.size(), data.data(), data.size(), inst.time, width, 0);
         };
         if (nc == 1 || nc == 3 || nc == 9) {
           addView(f.name, nc, [&](int i, int k) { return f.values[static_cast<std::size_t>(i) * nc + k]; });
@@ -338,7 +459,7 @@ void writeGmshResults(const Mesh& mesh, const std::string& path, const std::vect
       ++step;
     }
     for (const auto& [name, tag] : views) {
-      gmsh::view::write(tag, path, true);
+      call(gmshLibrary().ViewWrite, tag, path.c_str(), 1);
       checkGmsh("writing view " + name + " to " + path);
     }
   } catch (const Error&) {
@@ -346,8 +467,7 @@ void writeGmshResults(const Mesh& mesh, const std::string& path, const std::vect
   } catch (const std::exception& e) {
     throw Error("writing " + path + ": gmsh error: " + e.what());
   } catch (...) {
-    std::string last;
-    gmsh::logger::getLastError(last);
+    const std::string last = lastError();
     throw Error("writing " + path + ": gmsh error: " + (last.empty() ? std::string("unknown") : last));
   }
 }
