@@ -1,10 +1,13 @@
 // AFFE_CHAR_MECA (constant values), AFFE_CHAR_MECA_F (functions of X, Y, INST)
 // and AFFE_CHAR_CINE (imposed displacements eliminated from the system).
+#include <algorithm>
+
 #include "commands/function_concepts.hpp"
 #include "commands/model_concepts.hpp"
 #include "commands/selection.hpp"
 #include "core/error.hpp"
 #include "lang/operators.hpp"
+#include "mesh/orient.hpp"
 
 namespace aster::lang {
 namespace {
@@ -35,6 +38,32 @@ void readImposed(const model::Model& m, const Keywords& occ, model::MechanicalLo
   if (!any) throw Error(occ.path + ": give at least one of DX, DY");
 }
 
+// VERI_NORM='OUI': a pressure pushes against the normal of each edge, so an edge
+// walked the wrong way round would pull instead. Every PRES_REP edge must have
+// its normal out of the 2D cell it bounds, as code_aster checks.
+void checkOutwardNormals(const mesh::Mesh& mesh, const Keywords& occ, const std::vector<int>& cells) {
+  const auto inward = mesh::inwardSegments(mesh, cells);
+  if (inward.empty()) return;
+  const int s = inward.front().segment;
+  std::string group;
+  for (const auto& g : occ.texts("GROUP_MA")) {
+    const auto& members = mesh.cellGroup(g);
+    if (std::find(members.begin(), members.end(), s) != members.end()) {
+      group = g;
+      break;
+    }
+  }
+  std::string groups;
+  for (const auto& g : occ.texts("GROUP_MA")) groups += (groups.empty() ? "'" : ", '") + g + "'";
+  throw Error(occ.path + "/GROUP_MA: the normal of cell " + mesh.cellName(s) + " (group " + group +
+              ") points into the cell " + mesh.cellName(inward.front().cell) + " it bounds" +
+              (inward.size() > 1 ? " (" + std::to_string(inward.size()) + " of the " + std::to_string(cells.size()) +
+                                       " edges are reversed)"
+                                 : std::string()) +
+              ", so the pressure would pull; orient the edges first: MODI_MAILLAGE{reuse = <mesh>, MAILLAGE = <mesh>, "
+              "ORIE_PEAU = {GROUP_MA_PEAU = {" + groups + "}}} (VERI_NORM = 'NON' skips this check)");
+}
+
 model::MechanicalLoad readMechanical(const model::Model& m, const Keywords& k) {
   model::MechanicalLoad load;
   const auto& mesh = m.mesh();
@@ -62,6 +91,7 @@ model::MechanicalLoad readMechanical(const model::Model& m, const Keywords& k) {
         throw Error(occ.path + ": PRES_REP applies to segments in 2D; cell " + mesh.cellName(c) + " is a " +
                     mesh::cellTypeName(mesh.cellType(c)));
     m.checkCellsOnModel(cells, occ.path);
+    if (k.text("VERI_NORM", "OUI") == "OUI") checkOutwardNormals(mesh, occ, cells);
     load.pressures.push_back({cells, valueOf(occ, "PRES")});
   }
   for (const auto& occ : k.factor("FORCE_NODALE"))

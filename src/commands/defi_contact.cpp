@@ -1,5 +1,14 @@
-// DEFI_CONTACT: frictionless contact zones, DISCRETE or CONTINUE. The terms are
-// built when STAT_NON_LINE numbers the unknowns (contact_concept.hpp).
+// DEFI_CONTACT: frictionless contact zones, DISCRETE or CONTINUE, each by exact
+// constraints (CONTRAINTE / STANDARD) or penalisation. The terms are built when
+// STAT_NON_LINE numbers the unknowns (contact_concept.hpp). Every keyword of the
+// catalogue (commands/DEFI_CONTACT.lua) is read here or restricted there to the
+// one value aster-lite implements.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
 #include "commands/contact_concept.hpp"
 #include "commands/model_concepts.hpp"
 #include "core/error.hpp"
@@ -9,6 +18,27 @@
 namespace aster::lang {
 namespace {
 
+// A strictly positive coefficient of a zone, or a clear error naming it.
+double positive(const Keywords& z, const std::string& key) {
+  const double v = z.real(key);
+  if (!(v > 0) || !std::isfinite(v)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.6g", v);
+    throw Error(z.path + "/" + key + " = " + text + ": the coefficient must be > 0");
+  }
+  return v;
+}
+
+// Cells or nodes of the groups named by a keyword; an unknown group names the keyword.
+template <class F>
+auto ofGroups(const Keywords& z, const std::string& key, F&& lookup) {
+  try {
+    return lookup();
+  } catch (const Error& e) {
+    throw Error(z.path + "/" + key + ": " + e.what());
+  }
+}
+
 ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   auto model = static_cast<ModelConcept&>(*k.conceptPtr("MODELE")).model;
   const auto& mesh = model->mesh();
@@ -17,27 +47,63 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   solver::ContactSettings settings;
   const std::string formulation = k.text("FORMULATION", "DISCRETE");
   settings.continueFormulation = formulation == "CONTINUE";
+  settings.info = static_cast<int>(k.integer("INFO"));
+  const bool checkNormals = k.text("VERI_NORM", "OUI") == "OUI";
   std::vector<solver::ContactZone> zones;
   for (const auto& z : k.factor("ZONE")) {
     solver::ContactZone zone;
-    zone.masterCells = mesh.cellGroup(z.text("GROUP_MA_MAIT"));
-    zone.slaveCells = mesh.cellGroup(z.text("GROUP_MA_ESCL"));
+    auto& zs = zone.settings;
+    zone.masterCells = ofGroups(z, "GROUP_MA_MAIT", [&] { return mesh.cellGroup(z.text("GROUP_MA_MAIT")); });
+    zone.slaveCells = ofGroups(z, "GROUP_MA_ESCL", [&] { return mesh.cellGroup(z.text("GROUP_MA_ESCL")); });
     model->checkCellsOnModel(zone.masterCells, z.path + "/GROUP_MA_MAIT");
     model->checkCellsOnModel(zone.slaveCells, z.path + "/GROUP_MA_ESCL");
-    if (z.has("TOLE_PROJ_EXT")) settings.outsideTolerance = z.real("TOLE_PROJ_EXT");
-    if (settings.continueFormulation) {
-      settings.rho = z.real("COEF_CONT", settings.rho);
-      if (z.text("INTERPOL_LAGS_C", "LINEAIRE") == "QUADRATIQUE")
-        settings.multipliers = contact::MultiplierInterpolation::Quadratic;
-      const std::string integration = z.text("INTEGRATION", "AUTO");
-      if (integration == "GAUSS") {
-        settings.integration = contact::ContactIntegration::Gauss;
-        settings.gaussPoints = static_cast<int>(z.integer("ORDRE_INT"));
-      } else if (integration == "AUTO") {
-        settings.integration = contact::ContactIntegration::Nodes;
-      } else {
-        throw Error(z.path + ": INTEGRATION='" + integration + "' is not available; use 'GAUSS' or 'AUTO'");
+    for (int c : zone.slaveCells)
+      if (std::find(zone.masterCells.begin(), zone.masterCells.end(), c) != zone.masterCells.end())
+        throw Error(z.path + ": cell " + mesh.cellName(c) + " is in both GROUP_MA_MAIT and GROUP_MA_ESCL");
+    if (checkNormals)
+      for (const std::string key : {"GROUP_MA_MAIT", "GROUP_MA_ESCL"}) {
+        const auto [cell, inside] =
+            solver::inwardContactCell(mesh, key == "GROUP_MA_MAIT" ? zone.masterCells : zone.slaveCells);
+        if (cell >= 0)
+          throw Error(z.path + "/" + key + ": the normal of cell " + mesh.cellName(cell) + " (group '" + z.text(key) +
+                      "') points into the cell " + mesh.cellName(inside) +
+                      " it bounds; contact normals must point outwards: orient the group with "
+                      "MODI_MAILLAGE/ORIE_PEAU, or give VERI_NORM='NON'");
       }
+    zs.outsideTolerance = z.real("TOLE_PROJ_EXT");
+    if (!(zs.outsideTolerance >= 0))
+      throw Error(z.path + "/TOLE_PROJ_EXT = " + std::to_string(zs.outsideTolerance) + ": it must be >= 0");
+    zs.maxDistance = z.real("DIST_APPA");
+    // SANS_GROUP_NO, SANS_GROUP_MA: nodes without contact.
+    for (const auto& g : z.has("SANS_GROUP_NO") ? z.texts("SANS_GROUP_NO") : std::vector<std::string>{})
+      for (int n : ofGroups(z, "SANS_GROUP_NO", [&] { return mesh.nodeGroup(g); })) zs.excludedNodes.push_back(n);
+    for (const auto& g : z.has("SANS_GROUP_MA") ? z.texts("SANS_GROUP_MA") : std::vector<std::string>{})
+      for (int n : mesh.nodesOfCells(ofGroups(z, "SANS_GROUP_MA", [&] { return mesh.cellGroup(g); })))
+        zs.excludedNodes.push_back(n);
+    const std::string algo = z.text("ALGO_CONT");
+    if (!settings.continueFormulation) {
+      if (algo == "PENALISATION") zs.penalty = positive(z, "E_N");
+    } else {
+      if (algo == "PENALISATION") zs.penalty = positive(z, "COEF_PENA_CONT");
+      else zs.rho = positive(z, "COEF_CONT");
+      if (z.text("INTERPOL_LAGS_C", "LINEAIRE") == "QUADRATIQUE")
+        zs.multipliers = contact::MultiplierInterpolation::Quadratic;
+      const std::string integration = z.text("INTEGRATION", "GAUSS");
+      if (integration == "GAUSS") {
+        zs.integration = contact::ContactIntegration::Gauss;
+        zs.gaussPoints = static_cast<int>(z.integer("ORDRE_INT"));
+        const bool seg3 = std::any_of(zone.slaveCells.begin(), zone.slaveCells.end(),
+                                      [&](int c) { return mesh.cellType(c) == mesh::CellType::SEG3; });
+        if (zs.multipliers == contact::MultiplierInterpolation::Quadratic && seg3 && zs.gaussPoints < 3)
+          throw Error(z.path + "/ORDRE_INT = " + std::to_string(zs.gaussPoints) +
+                      ": INTERPOL_LAGS_C='QUADRATIQUE' on SEG3 slave cells needs ORDRE_INT >= 3");
+      } else {
+        zs.integration = contact::ContactIntegration::Nodes;  // 'AUTO', the validator allows nothing else
+      }
+      const std::string init = z.text("CONTACT_INIT", "INTERPENETRE");
+      zs.initialStatus = init == "OUI"   ? contact::ForcedStatus::Contact
+                         : init == "NON" ? contact::ForcedStatus::Separated
+                                         : contact::ForcedStatus::None;
     }
     zones.push_back(std::move(zone));
   }

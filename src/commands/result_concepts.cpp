@@ -27,8 +27,18 @@ const mesh::NodalField& ResultConcept::nodalField(const ResultInstant& i, const 
     if (f.name == name) return f;
     list += (list.empty() ? "" : ", ") + f.name;
   }
+  if (gaussField(i, name))
+    throw Error("NOM_CHAM='" + name + "' is a field at Gauss points, not at nodes (nodal fields at INST=" +
+                post::formatNumber(i.time) + ": " + list + ")");
+  for (const auto& g : i.gauss) list += (list.empty() ? "" : ", ") + g.name;
   throw Error("NOM_CHAM='" + name + "' is not stored in the result at INST=" + post::formatNumber(i.time) +
               " (fields: " + list + ")");
+}
+
+const GaussField* ResultConcept::gaussField(const ResultInstant& i, const std::string& name) {
+  for (const auto& g : i.gauss)
+    if (g.name == name) return &g;
+  return nullptr;
 }
 
 }  // namespace aster::lang

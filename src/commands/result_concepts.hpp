@@ -1,5 +1,6 @@
-// Concepts holding computed fields: cham_no_sdaster (one nodal field) and
-// evol_noli (STAT_NON_LINE's result: nodal fields per converged instant).
+// Concepts holding computed fields: cham_no_sdaster (one nodal field), cham_elem
+// (one field at Gauss points) and evol_noli (STAT_NON_LINE's result: nodal and
+// Gauss point fields per converged instant).
 // Fields are stored per mesh node (node-major, components in order), the form
 // the MED / GMSH / VTK writers take.
 #pragma once
@@ -34,6 +35,17 @@ struct GaussField {
   std::vector<double> values;
 };
 
+// One field at Gauss points, as resu:getField('SIEF_ELGA', inst) gives it:
+// getValues() is `field.values` (cell after cell of field.cells, Gauss point after
+// Gauss point, components in the order of getComponents()).
+class GaussFieldConcept : public Concept {
+ public:
+  GaussFieldConcept(std::shared_ptr<mesh::Mesh> m, GaussField f) : mesh(std::move(m)), field(std::move(f)) {}
+  std::string typeName() const override { return "cham_elem"; }
+  std::shared_ptr<mesh::Mesh> mesh;
+  GaussField field;
+};
+
 struct ResultInstant {
   int index = 0;      // NUME_ORDRE
   double time = 0.0;  // INST
@@ -55,6 +67,8 @@ class ResultConcept : public Concept {
   const ResultInstant& last() const;
   // A field of an instant by name; throws listing the available ones.
   static const mesh::NodalField& nodalField(const ResultInstant& i, const std::string& name);
+  // A Gauss point field of an instant, or null.
+  static const GaussField* gaussField(const ResultInstant& i, const std::string& name);
 };
 
 }  // namespace aster::lang

@@ -1,6 +1,8 @@
 // What a study may ask results and fields (code_aster's method names):
 // resu:getField('DEPL', inst), resu:getAccessParameters(), field:getValues(),
-// field:getComponents().
+// field:getComponents(). A nodal field (cham_no_sdaster) gives its values node
+// after node; a field at Gauss points (cham_elem, SIEF_ELGA) cell after cell of
+// the model, Gauss point after Gauss point, components in the order of getComponents().
 #include "commands/result_concepts.hpp"
 #include "core/error.hpp"
 #include "lang/operators.hpp"
@@ -13,18 +15,24 @@ Datum getField(Concept& self, const std::vector<Value>& args, Session&) {
   if (args.empty() || args[0].kind != Value::Kind::Text)
     throw Error("getField takes a field name and an instant: resu:getField('DEPL', 1.0)");
   const ResultInstant& inst = args.size() > 1 && args[1].isNumber() ? r.at(args[1].real) : r.last();
+  if (const GaussField* g = ResultConcept::gaussField(inst, args[0].text))
+    return Datum::ofConcept(std::make_shared<GaussFieldConcept>(r.model->meshPtr(), *g));
   auto c = std::make_shared<NodalFieldConcept>(r.model->meshPtr(), ResultConcept::nodalField(inst, args[0].text));
   return Datum::ofConcept(c);
 }
 
 Datum accessParameters(Concept& self, const std::vector<Value>&, Session&) {
   auto& r = static_cast<ResultConcept&>(self);
-  std::vector<Datum> inst, order;
+  std::vector<Datum> inst, order, iterations;
   for (const auto& i : r.instants) {
     inst.push_back(Datum::ofReal(i.time));
     order.push_back(Datum::ofInteger(i.index));
+    iterations.push_back(Datum::ofInteger(i.newtonIterations));
   }
-  return Datum::ofMap({{"INST", Datum::ofList(inst)}, {"NUME_ORDRE", Datum::ofList(order)}});
+  // ITER_GLOB: Newton iterations of each instant (0 for the initial state).
+  return Datum::ofMap({{"INST", Datum::ofList(inst)},
+                       {"NUME_ORDRE", Datum::ofList(order)},
+                       {"ITER_GLOB", Datum::ofList(iterations)}});
 }
 
 Datum fieldValues(Concept& self, const std::vector<Value>&, Session&) {
@@ -39,10 +47,24 @@ Datum fieldComponents(Concept& self, const std::vector<Value>&, Session&) {
   return Datum::ofList(out);
 }
 
+Datum gaussValues(Concept& self, const std::vector<Value>&, Session&) {
+  std::vector<Datum> out;
+  for (double v : static_cast<GaussFieldConcept&>(self).field.values) out.push_back(Datum::ofReal(v));
+  return Datum::ofList(out);
+}
+
+Datum gaussComponents(Concept& self, const std::vector<Value>&, Session&) {
+  std::vector<Datum> out;
+  for (const auto& c : static_cast<GaussFieldConcept&>(self).field.components) out.push_back(Datum::ofText(c));
+  return Datum::ofList(out);
+}
+
 RegisterMethod m1("evol_noli", "getField", getField);
 RegisterMethod m2("evol_noli", "getAccessParameters", accessParameters);
 RegisterMethod m3("cham_no_sdaster", "getValues", fieldValues);
 RegisterMethod m4("cham_no_sdaster", "getComponents", fieldComponents);
+RegisterMethod m5("cham_elem", "getValues", gaussValues);
+RegisterMethod m6("cham_elem", "getComponents", gaussComponents);
 
 }  // namespace
 }  // namespace aster::lang

@@ -1,6 +1,7 @@
 // CONTINUE contact terms of one slave cell (formulation in the header).
 #include "contact/continue_formulation.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "contact/gap.hpp"
@@ -60,7 +61,10 @@ int multiplierCount(const SlaveCell& slave, const ContinueOptions& options) {
 void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& masters, const ContinueOptions& options,
                        ContinueCellTerms& out) {
   checkSegmentType(slave.type, "slave");
-  if (!(options.rho > 0))
+  const bool penalised = options.penalty != 0;
+  if (penalised && !(options.penalty > 0 && std::isfinite(options.penalty)))
+    throw Error("CONTINUE contact: COEF_PENA_CONT must be > 0, got " + std::to_string(options.penalty));
+  if (!penalised && !(options.rho > 0 && std::isfinite(options.rho)))
     throw Error("CONTINUE contact: COEF_CONT must be > 0, got " + std::to_string(options.rho));
   if (masters.empty()) throw Error("CONTINUE contact: no master segment given");
   const int ns = slave.type == fem::CellType::SEG3 ? 3 : 2;
@@ -81,7 +85,10 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
   out.tangent.setZero(n, n);
   out.points.clear();
 
-  const double rho = options.rho;
+  // The coefficient of the multiplier block -(lambda / c) dlambda, and of the
+  // augmentation rho g dg (none with penalisation).
+  const double c = penalised ? options.penalty : options.rho;
+  const double rho = penalised ? 0.0 : options.rho;
   const int lo = out.lagrangeOffset;
   const PointRule rule = slaveRule(slave.type, options);
   for (int i = 0; i < rule.size; ++i) {
@@ -116,16 +123,18 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
       st.masterSegment = mp.segment;
       st.masterXi = mp.projection.xi;
     }
-    st.augmented = lambda + rho * st.gap;
+    st.augmented = penalised ? c * st.gap : lambda + rho * st.gap;
     st.status = !mp.paired() ? PointStatus::Unpaired
                              : (st.augmented <= 0 ? PointStatus::Contact : PointStatus::Separated);
+    if (mp.paired() && options.forcedStatus != ForcedStatus::None)
+      st.status = options.forcedStatus == ForcedStatus::Contact ? PointStatus::Contact : PointStatus::Separated;
     out.points.push_back(st);
 
     if (st.status != PointStatus::Contact) {
-      // -(lambda/rho) dlambda
+      // -(lambda/c) dlambda
       for (int v = 0; v < nm; ++v) {
-        out.residual(lo + v) -= W * lambda / rho * L(v);
-        for (int w = 0; w < nm; ++w) out.tangent(lo + v, lo + w) -= W / rho * L(v) * L(w);
+        out.residual(lo + v) -= W * lambda / c * L(v);
+        for (int w = 0; w < nm; ++w) out.tangent(lo + v, lo + w) -= W / c * L(v) * L(w);
       }
       continue;
     }
@@ -139,7 +148,8 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
         f(mo + p - 2, 1.0);
       }
     };
-    const double g = st.gap, aug = st.augmented;
+    // The force factor of dg: lambda + rho g (augmented Lagrangian), lambda (penalisation).
+    const double g = st.gap, aug = penalised ? lambda : lambda + rho * g;
     for (int p = 0; p < nq; ++p) {
       scatter(p, [&](int I, double wI) {
         out.residual(I) += W * aug * wI * ng.gradient(p);
@@ -154,6 +164,11 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
       });
     }
     for (int v = 0; v < nm; ++v) out.residual(lo + v) += W * g * L(v);
+    if (penalised)
+      for (int v = 0; v < nm; ++v) {
+        out.residual(lo + v) -= W * lambda / c * L(v);
+        for (int w = 0; w < nm; ++w) out.tangent(lo + v, lo + w) -= W / c * L(v) * L(w);
+      }
   }
 }
 

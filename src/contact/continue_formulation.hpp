@@ -42,6 +42,15 @@
 // exactly touching with lambda = 0 (the start of a study whose slave lies on
 // the master) counts as in contact, as code_aster's CONTACT_INIT='INTERPENETRE':
 // otherwise a body held only by contact would be free at the first iteration.
+// Penalisation (ALGO_CONT='PENALISATION', kappa = COEF_PENA_CONT): the
+// pressure is lambda = kappa min(g, 0), written with the same LAGS_C unknowns
+// through the energy-like function
+//   contact   (g <= 0):  lambda g - lambda^2 / (2 kappa)
+//   separated (g > 0):   -lambda^2 / (2 kappa)
+// whose variation gives
+//   contact:   lambda dg  +  (g - lambda / kappa) dlambda
+//   separated: -(lambda / kappa) dlambda
+// (the point penetrates by g = lambda / kappa; `augmented` holds kappa g).
 // The tangent is the exact derivative of the residual for frozen statuses,
 // including the projection and master curvature terms (gap.hpp), hence
 // symmetric. A point whose projection falls outside every master segment is
@@ -74,8 +83,15 @@ enum class MultiplierInterpolation {
   Quadratic,  // at nodes 1, 2, 3 with the SEG3 shape functions (a SEG2 slave stays Linear)
 };
 
+// Statuses imposed on the paired points instead of the criterion (CONTACT_INIT
+// at the first iteration of a computation).
+enum class ForcedStatus { None, Contact, Separated };
+
 struct ContinueOptions {
   double rho = 100;  // COEF_CONT
+  // ALGO_CONT='PENALISATION' when > 0: COEF_PENA_CONT (rho is then unused).
+  double penalty = 0;
+  ForcedStatus forcedStatus = ForcedStatus::None;
   ContactIntegration integration = ContactIntegration::Gauss;
   int gaussPoints = 3;  // >= 3 required with Quadratic multipliers on a SEG3
   MultiplierInterpolation multiplierInterpolation = MultiplierInterpolation::Linear;
@@ -106,7 +122,7 @@ struct ContactPointState {
   PointStatus status = PointStatus::Separated;
   double gap = 0;                      // 0 when unpaired
   double pressure = 0;                 // interpolated LAGS_C (lambda)
-  double augmented = 0;                // pressure + rho * gap
+  double augmented = 0;                // pressure + rho * gap (penalisation: kappa * gap)
   int masterSegment = -1;
   double masterXi = 0;
 };

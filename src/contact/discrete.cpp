@@ -1,11 +1,14 @@
 // DISCRETE node-to-segment terms and the active-set update (see discrete.hpp).
 #include "contact/discrete.hpp"
 
+#include <cmath>
 #include <string>
 
 namespace aster::contact {
 
-DiscreteNodeTerms discreteNodeTerms(const NodeGap& gap, double lambda, bool active) {
+DiscreteNodeTerms discreteNodeTerms(const NodeGap& gap, double lambda, bool active, double penalty) {
+  if (penalty < 0 || !std::isfinite(penalty))
+    throw Error("DISCRETE contact: the penalty stiffness must be >= 0, got " + std::to_string(penalty));
   const int n = static_cast<int>(gap.gradient.size());
   DiscreteNodeTerms t;
   t.residualU.setZero(n);
@@ -17,6 +20,10 @@ DiscreteNodeTerms discreteNodeTerms(const NodeGap& gap, double lambda, bool acti
     t.tangentUU = lambda * gap.hessian;
     t.tangentULambda = gap.gradient;
     t.tangentLambdaLambda = 0;
+    if (penalty > 0) {
+      t.residualLambda -= lambda / penalty;
+      t.tangentLambdaLambda = -1 / penalty;
+    }
   } else {
     t.residualLambda = lambda;
     t.tangentLambdaLambda = 1;

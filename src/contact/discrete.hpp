@@ -11,6 +11,13 @@
 //   inactive node: R_lambda = lambda (the equation lambda = 0), K_lambdalambda = 1.
 // q = (slave x, y, master node 1 x, y, node 2 x, y[, node 3 x, y]).
 //
+// Penalisation (ALGO_CONT='PENALISATION'): an active node carries the force
+// lambda = k g (k > 0 the node's penalty stiffness, k = E_N times the node's
+// share of the slave length in aster-lite), i.e. the energy lambda g -
+// lambda^2 / (2k), whose variation changes only the multiplier equation:
+//   active node:   R_lambda = g - lambda / k,  K_lambdalambda = -1 / k
+// (the rest as above). Nodes penetrate by g = lambda / k.
+//
 // Active set (updateActiveSet): every inactive node that penetrates
 // (g < -gapTolerance) is activated; only when no node was activated, active
 // nodes in tension (lambda > multiplierTolerance) are released: by default
@@ -32,8 +39,9 @@ struct DiscreteNodeTerms {
   double tangentLambdaLambda = 0;
 };
 
-// Terms of one slave node with multiplier lambda, active or not.
-DiscreteNodeTerms discreteNodeTerms(const NodeGap& gap, double lambda, bool active);
+// Terms of one slave node with multiplier lambda, active or not; penalty > 0
+// is the node's penalty stiffness k (0: the exact constraint g = 0).
+DiscreteNodeTerms discreteNodeTerms(const NodeGap& gap, double lambda, bool active, double penalty = 0);
 
 struct ActiveSetOptions {
   double gapTolerance = 0;         // g < -gapTolerance activates an inactive node

@@ -127,6 +127,11 @@ MasterProjection projectOnMaster(const Eigen::Vector2d& xs, const std::vector<Se
       bestDist = p.distance;
     }
   }
+  // DIST_APPA: a point too far from the master is not paired.
+  if (best.segment >= 0 && options.maxDistance >= 0 && best.projection.distance > options.maxDistance) {
+    best.segment = -1;
+    return best;
+  }
   return best.segment >= 0 ? best : nearestOutside;
 }
 

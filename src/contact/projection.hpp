@@ -38,6 +38,7 @@ const char* projectionStatusName(ProjectionStatus s);
 
 struct ProjectionOptions {
   double outsideTolerance = 0.5;  // in xi units past an end (>= 0)
+  double maxDistance = -1;        // DIST_APPA: farther points are not paired (< 0: no limit)
   int samples = 16;               // intervals of the bracketing sampling of a SEG3
   int maxIterations = 100;        // safeguarded Newton iterations
 };
@@ -63,7 +64,8 @@ struct MasterProjection {
 // The closest valid (Inside, then Clamped) projection over several master
 // segments: the smallest distance wins, an Inside projection beating a
 // Clamped one at equal distance. segment = -1 when the point falls outside
-// every segment. Throws when the list is empty.
+// every segment, or when the closest valid projection is farther than
+// options.maxDistance (>= 0). Throws when the list is empty.
 MasterProjection projectOnMaster(const Eigen::Vector2d& xs, const std::vector<Segment>& masters,
                                  const ProjectionOptions& options = {});
 

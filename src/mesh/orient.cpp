@@ -23,7 +23,43 @@ double signedArea(const Mesh& mesh, int c) {
   return a;
 }
 
+// Directed vertex edges of every 2D cell: {a, b} (sorted) -> the cells having it.
+std::map<std::pair<int, int>, std::vector<int>> cellsOnEdges(const Mesh& mesh) {
+  std::map<std::pair<int, int>, std::vector<int>> cellsOnEdge;
+  for (int c = 0; c < mesh.cellCount(); ++c) {
+    if (topologicalDimension(mesh.cellType(c)) != 2) continue;
+    const int nv = vertexCount(mesh.cellType(c));
+    const auto n = mesh.cellNodes(c);
+    for (int i = 0; i < nv; ++i) cellsOnEdge[std::minmax(n[i], n[(i + 1) % nv])].push_back(c);
+  }
+  return cellsOnEdge;
+}
+
+// Whether the segment a -> b, an edge of the 2D cell c, has its normal (dy, -dx) out of c.
+bool pointsOutOf(const Mesh& mesh, int c, int a, int b) {
+  const int nv = vertexCount(mesh.cellType(c));
+  const auto n = mesh.cellNodes(c);
+  bool sameWay = false;  // the cell's vertex cycle goes a -> b
+  for (int i = 0; i < nv; ++i)
+    if (n[i] == a && n[(i + 1) % nv] == b) sameWay = true;
+  // Walking a counterclockwise cell's cycle keeps the outside on the right: normal (dy, -dx).
+  return sameWay == (signedArea(mesh, c) > 0);
+}
+
 }  // namespace
+
+std::vector<InwardSegment> inwardSegments(const Mesh& mesh, const std::vector<int>& cells) {
+  const auto cellsOnEdge = cellsOnEdges(mesh);
+  std::vector<InwardSegment> out;
+  for (int s : cells) {
+    if (s < 0 || s >= mesh.cellCount() || !isSegment(mesh.cellType(s))) continue;
+    const int a = mesh.cellNodes(s)[0], b = mesh.cellNodes(s)[1];
+    const auto it = cellsOnEdge.find(std::minmax(a, b));
+    if (it == cellsOnEdge.end() || it->second.size() != 1) continue;
+    if (!pointsOutOf(mesh, it->second[0], a, b)) out.push_back({s, it->second[0]});
+  }
+  return out;
+}
 
 void reverseSegment(Mesh& mesh, int cell) {
   const auto n = mesh.cellNodes(cell);
@@ -36,14 +72,7 @@ void reverseSegment(Mesh& mesh, int cell) {
 }
 
 int orientBoundarySegments(Mesh& mesh, const std::vector<int>& cells) {
-  // Directed vertex edges of every 2D cell: (a, b) -> cell, in the cell's vertex cycle.
-  std::map<std::pair<int, int>, std::vector<int>> cellsOnEdge;
-  for (int c = 0; c < mesh.cellCount(); ++c) {
-    if (topologicalDimension(mesh.cellType(c)) != 2) continue;
-    const int nv = vertexCount(mesh.cellType(c));
-    const auto n = mesh.cellNodes(c);
-    for (int i = 0; i < nv; ++i) cellsOnEdge[std::minmax(n[i], n[(i + 1) % nv])].push_back(c);
-  }
+  const auto cellsOnEdge = cellsOnEdges(mesh);
   int reversed = 0;
   std::vector<int> free;
   for (int s : cells) {
@@ -61,15 +90,7 @@ int orientBoundarySegments(Mesh& mesh, const std::vector<int>& cells) {
       throw Error("ORIE_PEAU: segment '" + mesh.cellName(s) + "' lies between the 2D cells '" +
                   mesh.cellName(it->second[0]) + "' and '" + mesh.cellName(it->second[1]) +
                   "': it is not on the boundary, its outward side is undefined");
-    const int c = it->second[0];
-    const int nv = vertexCount(mesh.cellType(c));
-    const auto n = mesh.cellNodes(c);
-    bool sameWay = false;  // the cell's vertex cycle goes a -> b
-    for (int i = 0; i < nv; ++i)
-      if (n[i] == a && n[(i + 1) % nv] == b) sameWay = true;
-    // Walking a counterclockwise cell's cycle keeps the outside on the right: normal (dy, -dx).
-    const bool outward = sameWay == (signedArea(mesh, c) > 0);
-    if (!outward) {
+    if (!pointsOutOf(mesh, it->second[0], a, b)) {
       reverseSegment(mesh, s);
       ++reversed;
     }

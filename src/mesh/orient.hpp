@@ -16,6 +16,17 @@ namespace aster::mesh {
 // Throws for a non-segment cell or a segment shared by two 2D cells.
 int orientBoundarySegments(Mesh& mesh, const std::vector<int>& cells);
 
+// A segment of a load whose normal points into the 2D cell it bounds (AFFE_CHAR_MECA's
+// VERI_NORM), with that cell.
+struct InwardSegment {
+  int segment;
+  int cell;
+};
+// The segments of `cells` whose normal points into their only adjacent 2D cell, in
+// the order of `cells`; nothing changes. Segments touching no 2D cell, or lying
+// between two, have no outward side and are not judged; other cells are skipped.
+std::vector<InwardSegment> inwardSegments(const Mesh& mesh, const std::vector<int>& cells);
+
 // The segment's nodes in the reverse direction (SEG3: b, a, middle).
 void reverseSegment(Mesh& mesh, int cell);
 

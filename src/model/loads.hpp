@@ -24,7 +24,7 @@ struct BodyForce {  // FORCE_INTERNE: force per unit reference area
   SpaceFunction fx, fy;
 };
 
-struct Pressure {  // PRES_REP: follower pressure on the deformed edge
+struct Pressure {  // PRES_REP: dead, or follower (STAT_NON_LINE TYPE_CHARGE='SUIV')
   std::vector<int> cells;
   SpaceFunction p;
 };

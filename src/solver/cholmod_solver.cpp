@@ -115,7 +115,12 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
     // ones keep CHOLMOD's default (AMD), cheaper to compute.
     const int savedMethods = c.nmethods;
     const int savedOrdering = c.method[0].ordering;
-    if (M.rows() >= kNestedDissectionSize) {
+    const int savedPostorder = c.postorder;
+    if (ordering_ != "AUTO") {  // RENUM given: that ordering and no other
+      c.nmethods = 1;
+      c.method[0].ordering = ordering_ == "AMD" ? CHOLMOD_AMD : ordering_ == "METIS" ? CHOLMOD_METIS : CHOLMOD_NATURAL;
+      if (ordering_ == "SANS") c.postorder = 0;
+    } else if (M.rows() >= kNestedDissectionSize) {
       c.nmethods = 1;
       c.method[0].ordering = CHOLMOD_NESDIS;
     }
@@ -123,10 +128,13 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
     if (!h_->factor && c.status == CHOLMOD_NOT_INSTALLED) {  // CHOLMOD built without METIS
       c.nmethods = savedMethods;
       c.method[0].ordering = savedOrdering;
+      c.postorder = savedPostorder;
+      if (ordering_ == "METIS") throw Error(name() + ": RENUM='METIS' is not available: CHOLMOD was built without METIS");
       h_->factor = cholmod_analyze(&view, &c);
     }
     c.nmethods = savedMethods;
     c.method[0].ordering = savedOrdering;
+    c.postorder = savedPostorder;
   }
   if (!h_->factor) throw Error(name() + ": symbolic analysis failed: " + cholmodStatus(c.status));
   switch (h_->factor->ordering) {

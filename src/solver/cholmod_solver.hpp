@@ -26,6 +26,9 @@ class CholmodSolver : public LinearSolver {
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
   std::string name() const override { return mode_ == Mode::Cholesky ? "CHOLMOD" : "CHOLMOD_LDLT"; }
   Mode mode() const { return mode_; }
+  // RENUM: AUTO (AMD; nested dissection on large matrices), AMD, METIS, SANS (natural).
+  // CHOLMOD_LDLT with constraint rows always orders them last (constrained AMD).
+  std::vector<std::string> orderings() const override { return {"AUTO", "AMD", "METIS", "SANS"}; }
 
   // Relative tolerance of the symmetry check, per pair A(i,j), A(j,i). Default 1e-10.
   void setSymmetryTolerance(double relTol) { symmetryTolerance_ = relTol; }

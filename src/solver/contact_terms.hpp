@@ -1,9 +1,36 @@
 // Frictionless contact as terms added to the mechanical system (DEFI_CONTACT):
 // DISCRETE (node-to-segment, a Lagrange multiplier per slave node, active set)
 // and CONTINUE (LAGS_C at the slave vertex nodes, augmented Lagrangian solved
-// by the generalized Newton method). Kernels and conventions: src/contact.
+// by the generalized Newton method), each also penalised. Kernels and
+// conventions: src/contact.
+//
+// Pairing: every Newton iteration pairs the slave nodes (DISCRETE) or the
+// slave cells' points (CONTINUE) with the master in the current configuration
+// (update()), and the gap is linearized exactly, projection included: the
+// geometric loop is part of Newton's (code_aster's ALGO_RESO_GEOM='NEWTON').
+//
+// CONT_NOEU (outputFields), on every slave node (nodes of the slave cells):
+//   CONT  1 in contact, 0 not (DISCRETE: the active set; CONTINUE: the
+//         criterion of the integration points evaluated at the node);
+//   JEU   the gap of the node against the master, > 0 open (0 when unpaired);
+//   RN    the normal pressure, <= 0 in compression, per unit reference length:
+//         DISCRETE, the nodal multiplier over the node's share of the slave
+//         length A_i = int N_i dGamma_0; CONTINUE, LAGS_C at the node (the
+//         middle node of a SEG3 with linear LAGS_C: the mean of its ends);
+//   RNX, RNY  the nodal force the contact terms apply to the node (minus their
+//         part of the residual at its DX, DY): > 0 along the master normal
+//         when the master pushes the slave away.
+// statusText(): active nodes (DISCRETE), points and nodes in contact (CONTINUE),
+// and a contact residual in length units that vanishes at convergence:
+//   DISCRETE  max over slave nodes of |g| (active; |g - RN/E_N| penalised)
+//             and of the penetration max(0, -g) (inactive);
+//   CONTINUE  max over LAGS_C nodes v of |R_v| / A_v, R_v the residual of the
+//             node's LAGS_C equation (int L_v g at points in contact, minus
+//             int L_v lambda/COEF_CONT elsewhere) and A_v = int L_v dGamma_0:
+//             a gap averaged around the node.
 #pragma once
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "contact/continue_formulation.hpp"
@@ -12,21 +39,41 @@
 
 namespace aster::solver {
 
+// What DEFI_CONTACT sets per ZONE.
+struct ZoneSettings {
+  // ALGO_CONT='PENALISATION' when > 0: DISCRETE, E_N (pressure per unit
+  // penetration: a node carries E_N * g times its share of the slave length);
+  // CONTINUE, COEF_PENA_CONT (lambda = COEF_PENA_CONT * g where g < 0).
+  double penalty = 0;
+  double rho = 100.0;  // COEF_CONT (CONTINUE, ALGO_CONT='STANDARD')
+  contact::ContactIntegration integration = contact::ContactIntegration::Gauss;  // CONTINUE: INTEGRATION
+  int gaussPoints = 3;                                                            // ORDRE_INT
+  // LAGS_C at the vertex nodes, linear along a slave cell (code_aster's), or at
+  // every node of a SEG3 slave, quadratic (aster-lite's INTERPOL_LAGS_C='QUADRATIQUE').
+  contact::MultiplierInterpolation multipliers = contact::MultiplierInterpolation::Linear;
+  // CONTINUE, CONTACT_INIT: the statuses of the first Newton iteration of the
+  // computation (None: the criterion, i.e. 'INTERPENETRE'; Contact: 'OUI'; Separated: 'NON').
+  contact::ForcedStatus initialStatus = contact::ForcedStatus::None;
+  double outsideTolerance = 0.5;  // TOLE_PROJ_EXT, in master xi units
+  double maxDistance = -1;        // DIST_APPA (< 0: no limit)
+  std::vector<int> excludedNodes;  // SANS_GROUP_NO, SANS_GROUP_MA: slave nodes without contact
+};
+
 struct ContactZone {
   std::vector<int> masterCells;  // mesh cells (SEG2/SEG3), oriented: the master normal points to the slave
   std::vector<int> slaveCells;
+  ZoneSettings settings;
 };
 
 struct ContactSettings {
   bool continueFormulation = false;  // FORMULATION='CONTINUE', else 'DISCRETE'
-  double rho = 100.0;                // COEF_CONT
-  contact::ContactIntegration integration = contact::ContactIntegration::Gauss;
-  int gaussPoints = 3;
-  // LAGS_C at the vertex nodes, linear along a slave cell (code_aster's), or at
-  // every node of a SEG3 slave, quadratic (aster-lite's INTERPOL_LAGS_C='QUADRATIQUE').
-  contact::MultiplierInterpolation multipliers = contact::MultiplierInterpolation::Linear;
-  double outsideTolerance = 0.5;  // TOLE_PROJ_EXT, in master xi units
+  int info = 1;                      // INFO=2: the contact state of each converged instant is printed
 };
+
+// The first cell of `cells` (segments) whose normal (dy, -dx) points into the
+// 2D cell of `mesh` it bounds (VERI_NORM), with that cell; -1 when none does.
+// Segments bounding no 2D cell (a rigid master) or two of them are not checked.
+std::pair<int, int> inwardContactCell(const mesh::Mesh& mesh, const std::vector<int>& cells);
 
 std::unique_ptr<AdditionalTerms> makeContactTerms(const MechanicalSystem& system, std::vector<ContactZone> zones,
                                                   const ContactSettings& settings);

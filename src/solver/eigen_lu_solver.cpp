@@ -49,6 +49,7 @@ void EigenLuSolver::analyze(const SparseMatrix& A) {
   factorized_ = false;
   pattern_.record(M);
   lu_->analyzePattern(M);
+  stats_.ordering = "COLAMD";
 }
 
 void EigenLuSolver::factorize(const SparseMatrix& A) {

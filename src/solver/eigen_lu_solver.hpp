@@ -15,6 +15,7 @@ class EigenLuSolver : public LinearSolver {
   void factorize(const SparseMatrix& A) override;
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
   std::string name() const override { return "EIGEN_LU"; }
+  std::vector<std::string> orderings() const override { return {"AUTO", "COLAMD"}; }
 
  private:
   class Factor;  // SparseLU with access to its pivots

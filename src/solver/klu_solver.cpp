@@ -55,9 +55,17 @@ void KluSolver::analyze(const SparseMatrix& A) {
   freeNumeric();
   freeSymbolic();
   pattern_.record(M);
-  h_->symbolic = klu_analyze(static_cast<int>(M.rows()), const_cast<int*>(M.outerIndexPtr()),
-                             const_cast<int*>(M.innerIndexPtr()), &h_->common);
+  // RENUM: AMD (KLU's default) or COLAMD after the block triangular form; SANS: neither.
+  h_->common.ordering = ordering_ == "COLAMD" ? 1 : 0;
+  h_->common.btf = ordering_ == "SANS" ? 0 : 1;
+  if (ordering_ == "SANS")
+    h_->symbolic = klu_analyze_given(static_cast<int>(M.rows()), const_cast<int*>(M.outerIndexPtr()),
+                                     const_cast<int*>(M.innerIndexPtr()), nullptr, nullptr, &h_->common);
+  else
+    h_->symbolic = klu_analyze(static_cast<int>(M.rows()), const_cast<int*>(M.outerIndexPtr()),
+                               const_cast<int*>(M.innerIndexPtr()), &h_->common);
   if (!h_->symbolic) throw Error("KLU: symbolic analysis failed: " + kluStatus(h_->common.status));
+  stats_.ordering = h_->symbolic->ordering == 0 ? "AMD" : h_->symbolic->ordering == 1 ? "COLAMD" : "natural";
 }
 
 void KluSolver::factorize(const SparseMatrix& A) {

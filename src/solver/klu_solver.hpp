@@ -17,6 +17,7 @@ class KluSolver : public LinearSolver {
   void factorize(const SparseMatrix& A) override;
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
   std::string name() const override { return "KLU"; }
+  std::vector<std::string> orderings() const override { return {"AUTO", "AMD", "COLAMD", "SANS"}; }
 
  private:
   struct Handles;  // klu.h's structures, kept out of this header

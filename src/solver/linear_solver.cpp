@@ -21,6 +21,19 @@ void LinearSolver::requireReadyToSolve(bool factorized, const Eigen::VectorXd& b
   }
 }
 
+void LinearSolver::setOrdering(const std::string& renum) {
+  const auto names = orderings();
+  for (const auto& n : names)
+    if (n == renum) {
+      ordering_ = renum;
+      return;
+    }
+  std::ostringstream s;
+  s << name() << " does not take RENUM='" << renum << "'; it takes:";
+  for (std::size_t i = 0; i < names.size(); ++i) s << (i ? ", " : " ") << "'" << names[i] << "'";
+  throw Error(s.str());
+}
+
 std::vector<std::string> linearSolverMethods() {
   return {"UMFPACK", "CHOLMOD", "CHOLMOD_LDLT", "KLU", "EIGEN_LU"};
 }

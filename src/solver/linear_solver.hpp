@@ -58,12 +58,20 @@ class LinearSolver {
   void setSingularityDigits(int nprec) { nprec_ = nprec; }
   int singularityDigits() const { return nprec_; }
 
+  // code_aster's SOLVEUR/RENUM: the fill-reducing ordering the next analyze() uses.
+  // Each solver honours the names orderings() lists ("AUTO": its own choice, "SANS":
+  // none); another throws aster::Error listing them.
+  void setOrdering(const std::string& renum);
+  const std::string& ordering() const { return ordering_; }
+  virtual std::vector<std::string> orderings() const { return {"AUTO"}; }
+
  protected:
   // Throws unless a factorization is ready and b has as many entries as the matrix has rows.
   void requireReadyToSolve(bool factorized, const Eigen::VectorXd& b) const;
 
   mutable LinearSolverStatistics stats_;  // solve() is const but counts its time
   int nprec_ = 8;
+  std::string ordering_ = "AUTO";
   SparsityPattern pattern_;  // what analyze() saw, to refuse another pattern in factorize()
 };
 

@@ -79,6 +79,7 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
     }
   }
   for (const auto& applied : problem_.loads) {
+    if (!applied.follower) continue;
     for (const auto& p : applied.load->pressures)
       for (int c : p.cells) {
         std::vector<int> d;
@@ -95,7 +96,9 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
     for (const auto& f : applied.load->edgeForces) timeDependent |= f.fx.dependsOnTime() || f.fy.dependsOnTime();
     for (const auto& f : applied.load->bodyForces) timeDependent |= f.fx.dependsOnTime() || f.fy.dependsOnTime();
     for (const auto& f : applied.load->nodalForces) timeDependent |= f.fx.dependsOnTime() || f.fy.dependsOnTime();
-    constantDeadLoads_.push_back(timeDependent ? Eigen::VectorXd() : deadLoadVector(*applied.load, 0.0));
+    if (!applied.follower)
+      for (const auto& p : applied.load->pressures) timeDependent |= p.p.dependsOnTime();
+    constantDeadLoads_.push_back(timeDependent ? Eigen::VectorXd() : deadLoadVector(applied, 0.0));
   }
 }
 
@@ -110,7 +113,8 @@ void MechanicalSystem::gatherCoords(int meshCell, double* X) const {
   }
 }
 
-Eigen::VectorXd MechanicalSystem::deadLoadVector(const model::MechanicalLoad& load, double t) const {
+Eigen::VectorXd MechanicalSystem::deadLoadVector(const AppliedLoad& applied, double t) const {
+  const model::MechanicalLoad& load = *applied.load;
   const mesh::Mesh& mesh = problem_.model->mesh();
   Eigen::VectorXd F = Eigen::VectorXd::Zero(dofCount());
   double X[2 * kMaxNodes];
@@ -155,6 +159,24 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const model::MechanicalLoad& lo
       });
     }
   }
+  // FIXE_CSTE pressures: -int p N dS on the reference edge (the follower formula at u = 0).
+  if (!applied.follower)
+    for (const auto& pr : load.pressures) {
+      auto pressure = [&](const Eigen::Vector2d& p) {
+        return loadValue(pr.p, "PRES_REP", "PRES", where, p(0), p(1), 0.0, t);
+      };
+      for (int c : pr.cells) {
+        where = " on cell " + mesh.cellName(c);
+        gatherCoords(c, X);
+        fem::dispatchEdge(fem::referenceCell(mesh.cellType(c), "loads"), [&](auto tag) {
+          constexpr fem::CellType T = decltype(tag)::value;
+          const Eigen::Map<const fem::EdgeCoords<T>> x(X);
+          mechanics::EdgeVector<T> f;
+          mechanics::followerPressure<T>(x, mechanics::EdgeVector<T>::Zero(), pressure, &f, nullptr);
+          scatter(c, f.data());
+        });
+      }
+    }
   for (const auto& nf : load.nodalForces)
     for (int n : nf.nodes) {
       if (!dofs_.count(n)) continue;
@@ -172,7 +194,7 @@ void MechanicalSystem::addDeadLoads(double t, Eigen::VectorXd& fext) const {
     if (constantDeadLoads_[i].size())
       fext += factor * constantDeadLoads_[i];
     else
-      fext += factor * deadLoadVector(*problem_.loads[i].load, t);
+      fext += factor * deadLoadVector(problem_.loads[i], t);
   }
 }
 

@@ -35,6 +35,9 @@ class InvalidStateError : public Error {
 struct AppliedLoad {
   const model::MechanicalLoad* load = nullptr;
   expr::FunctionPtr multiplier;  // FONC_MULT of INST; null means 1
+  // TYPE_CHARGE='SUIV': its pressures act on the deformed edges (and enter the
+  // tangent); otherwise (FIXE_CSTE) they are dead loads on the reference edges.
+  bool follower = false;
   double factor(double t) const { return multiplier ? multiplier->evaluate(&t) : 1.0; }
 };
 
@@ -61,7 +64,7 @@ class MechanicalSystem {
   // the driver adds contact's and builds the pattern.
   const fem::ElementDofs& elementDofs() const { return elements_; }
 
-  // Fint(U) and Fext(U, t) (pressures follow the deformation); when K is given,
+  // Fint(U) and Fext(U, t) (follower pressures act on the deformed edges); when K is given,
   // K += dFint/dU - dFext/dU, with K on a pattern containing elementDofs()
   // (the first elementDofs().elementCount() elements of `pattern`).
   void evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
@@ -81,7 +84,7 @@ class MechanicalSystem {
     const ElementKernel* kernel;
     int element;  // index in elements_
   };
-  struct Edge {  // a pressure edge
+  struct Edge {  // an edge of a follower pressure
     int meshCell;
     int element;
     const model::SpaceFunction* p;
@@ -89,7 +92,7 @@ class MechanicalSystem {
   };
   void gatherCoords(int meshCell, double* X) const;
   void addDeadLoads(double t, Eigen::VectorXd& fext) const;
-  Eigen::VectorXd deadLoadVector(const model::MechanicalLoad& load, double t) const;
+  Eigen::VectorXd deadLoadVector(const AppliedLoad& applied, double t) const;
 
   MechanicalProblem problem_;
   fem::DofMap dofs_;

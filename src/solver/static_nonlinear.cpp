@@ -35,6 +35,8 @@ StaticNonlinear::StaticNonlinear(const MechanicalSystem& system, AdditionalTerms
     n_ += terms_->unknownCount();
   }
   solver_->solver = makeLinearSolver(settings_.method);
+  solver_->solver->setOrdering(settings_.renum);
+  solver_->solver->setSingularityDigits(settings_.nprec);
 }
 
 void StaticNonlinear::buildPattern() {
@@ -47,6 +49,8 @@ void StaticNonlinear::buildPattern() {
   K_ = pattern_->newMatrix();
   Kelastic_.resize(0, 0);
   analyzed_ = false;
+  factorized_ = Factorized::None;
+  lastFixed_.clear();
 }
 
 void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatrix) {
@@ -61,28 +65,46 @@ void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatr
 
 bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::vector<double>& history,
                                 std::string& why) {
-  (void)t0;
   const int nm = system_.dofCount();
   const auto imposed = system_.imposed(t1);
-  std::vector<char> fixed(n_, 0), lastFixed;
+  std::vector<char> fixed(n_, 0);
   Eigen::VectorXd target = Eigen::VectorXd::Zero(n_);  // values of the fixed unknowns
   fem::SparseMatrix Kmod;
   bool statusChanged = false;
   LinearSolver& solver = *solver_->solver;
   history.clear();
+  const Eigen::VectorXd Ustart = U;
+  // PREDICTION='EXTRAPOLE': start from U_n + (dt_{n+1} / dt_n) (U_n - U_{n-1}), the last
+  // converged (sub-)step's increment; the first step has none and starts from U_n.
+  if (settings_.prediction == Prediction::Extrapolated && previousDt_ > 0)
+    U += ((t1 - t0) / previousDt_) * previousIncrement_;
   if (settings_.print)
-    Messages::info("  Instant " + sci(t1) + "\n    iter  " + (settings_.useRela ? "RESI_GLOB_RELA" : "RESI_GLOB_MAXI") +
-                   "   RESI_GLOB_MAXI   matrix       " + (terms_ ? "contact" : ""));
+    Messages::info("  Instant " + sci(t1) + "\n    iter  RESI_GLOB_RELA   RESI_GLOB_MAXI   matrix      time (s)   " +
+                   (terms_ ? "contact" : ""));
   for (int k = 0;; ++k) {
+    const auto iterationStart = Clock::now();
     // Ctrl-C: the unconverged instant is abandoned; the converged ones are kept.
     if (interrupt::requested())
       throw Interrupted("interrupted (SIGINT) during the instant " + sci(t1) + " (Newton iteration " +
                         std::to_string(k) + "), which is abandoned");
     if (terms_ && terms_->update(U)) buildPattern();
     if (!pattern_) buildPattern();
-    const bool newMatrix = !settings_.elasticMatrix && (k == 0 || (settings_.reacIter > 0 && k % settings_.reacIter == 0));
+    // The matrix of this iteration: the elastic one, or the tangent at U assembled now,
+    // or the factorization kept from before (REAC_ITER, REAC_INCR).
+    bool elasticNow = settings_.elasticMatrix;
+    bool assembleTangent = false;
+    if (k == 0 && settings_.prediction == Prediction::Elastic) {
+      elasticNow = true;
+    } else if (k == 0 && settings_.prediction == Prediction::Tangent) {
+      elasticNow = false;
+      assembleTangent = factorized_ != Factorized::Tangent || steps_ == 0 ||
+                        (settings_.reacIncr > 0 && steps_ % settings_.reacIncr == 0);
+    } else if (!elasticNow) {
+      assembleTangent = factorized_ != Factorized::Tangent || k == 0 ||
+                        (settings_.reacIter > 0 && k % settings_.reacIter == 0);
+    }
     try {
-      assemble(U, t1, newMatrix);
+      assemble(U, t1, assembleTangent);
     } catch (const InvalidStateError& e) {
       // An inverted cell after too large a correction: the step may succeed
       // when cut, as with code_aster's EVENEMENT='ERREUR'. Invalid data (a
@@ -91,7 +113,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
       stats_.iterations += k;
       return false;
     }
-    if (settings_.elasticMatrix && Kelastic_.size() == 0) {
+    if (elasticNow && Kelastic_.size() == 0) {
       Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
       Eigen::VectorXd keepFint = fint_, keepFext = fext_, keepR = r_;
       assemble(zero, t1, true);
@@ -115,6 +137,11 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
         target(d) = 0.0;
       }
     }
+    // A kept tangent factorization eliminated other unknowns: assemble anew.
+    if (!elasticNow && !assembleTangent && fixed != lastFixed_) {
+      assemble(U, t1, true);
+      assembleTangent = true;
+    }
 
     // Residual on the free unknowns, relative to the forces that balance the
     // internal forces (external loads plus support reactions), as code_aster.
@@ -134,27 +161,47 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     const double rela = denom > 0 ? resMax / denom : resMax;
     const double measure = settings_.useRela ? rela : resMax;
     history.push_back(measure);
-    if (settings_.print)
-      Messages::info("    " + std::string(k < 10 ? "   " : "  ") + std::to_string(k) + "  " + sci(rela) + "     " +
-                     sci(resMax, 2) + "         " + (newMatrix || (settings_.elasticMatrix && k == 0) ? "TANGENTE " : "         ") +
-                     (settings_.elasticMatrix ? "(ELAS)" : "      ") + "  " + (terms_ ? terms_->statusText() : ""));
-    const double tolerance = settings_.useRela ? settings_.resiGlobRela : settings_.resiGlobMaxi;
+    // One row of the table, printed when the iteration ends (its time included); the
+    // contact column says how contact stands when the residual is measured.
+    const std::string contactText = terms_ ? terms_->statusText() : "";
+    auto printRow = [&](const char* matrix) {
+      if (!settings_.print) return;
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "    %4d  %s     %s         %-9s   %.2E   ", k, sci(rela).c_str(),
+                    sci(resMax, 2).c_str(), matrix, seconds(iterationStart));
+      Messages::info(buf + contactText);
+    };
+    // CONVERGENCE: every criterion given must hold.
+    const bool criteriaMet = (!settings_.useRela || rela <= settings_.resiGlobRela) &&
+                             (!settings_.useMaxi || resMax <= settings_.resiGlobMaxi) &&
+                             (settings_.useRela || settings_.useMaxi);
     // With no load at all (a rigid motion imposed, say) the relative residual is
     // noise over noise: accept a residual at round-off level of the stiffness forces.
     double kmax = 0;
-    const fem::SparseMatrix& Kscale = settings_.elasticMatrix ? Kelastic_ : K_;
+    const fem::SparseMatrix& Kscale = elasticNow ? Kelastic_ : K_;
     for (int i = 0; i < Kscale.outerSize(); ++i) kmax = std::max(kmax, std::fabs(Kscale.coeff(i, i)));
     const bool atRoundOff = resMax <= 1e-13 * kmax * std::max(U.head(nm).lpNorm<Eigen::Infinity>(), 1e-30);
     bool dirichletMet = true;
     for (const auto& [d, v] : imposed) dirichletMet = dirichletMet && std::fabs(U(d) - v) <= 1e-12 * (1 + std::fabs(v));
-    if (k > 0 && (measure <= tolerance || atRoundOff) && !statusChanged && dirichletMet) {
+    if (k > 0 && (criteriaMet || atRoundOff) && !statusChanged && dirichletMet) {
+      printRow("");
       stats_.iterations += k;
+      finishStep(U, Ustart, t1 - t0);
       return true;
     }
     if (k >= settings_.iterGlobMaxi) {
+      printRow("");
       why = "no convergence in ITER_GLOB_MAXI = " + std::to_string(settings_.iterGlobMaxi) + " Newton iterations (" +
-            (settings_.useRela ? "RESI_GLOB_RELA" : "RESI_GLOB_MAXI") + " = " + sci(measure, 3) + ")";
+            (settings_.useRela ? "RESI_GLOB_RELA = " + sci(rela, 3) + (settings_.useMaxi ? ", " : "") : "") +
+            (settings_.useMaxi ? "RESI_GLOB_MAXI = " + sci(resMax, 3) : "") + ")";
       stats_.iterations += k;
+      if (!settings_.arret && dirichletMet) {
+        // CONVERGENCE/ARRET='NON': the step is kept as it is.
+        Messages::alarm("STAT_NON_LINE", "instant " + sci(t1) + ": " + why +
+                                             "; the step is accepted as it is (CONVERGENCE/ARRET='NON')");
+        finishStep(U, Ustart, t1 - t0);
+        return true;
+      }
       return false;
     }
 
@@ -163,16 +210,16 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     Eigen::VectorXd dUc = Eigen::VectorXd::Zero(n_);
     for (int i = 0; i < n_; ++i)
       if (fixed[i]) dUc(i) = target(i) - U(i);
-    const fem::SparseMatrix& Kuse = settings_.elasticMatrix ? Kelastic_ : K_;
+    const fem::SparseMatrix& Kuse = elasticNow ? Kelastic_ : K_;
     Eigen::VectorXd rhs = -r_;
     if (dUc.lpNorm<Eigen::Infinity>() > 0) rhs -= Kuse * dUc;
-    const bool refactor = newMatrix || (settings_.elasticMatrix && k == 0) || fixed != lastFixed;
+    const bool refactor = assembleTangent || (elasticNow && factorized_ != Factorized::Elastic) ||
+                          fixed != lastFixed_;
     if (refactor) {
-      // The tangent assembled at every iteration is eliminated in place (it is assembled
-      // again before its next use); a matrix kept across iterations is copied first.
-      const bool inPlace = newMatrix && !settings_.elasticMatrix && settings_.reacIter == 1;
-      if (!inPlace) Kmod = Kuse;
-      fem::SparseMatrix& A = inPlace ? K_ : Kmod;
+      // A tangent is eliminated in place (it is assembled again before it is factorized
+      // again); the elastic matrix, kept for the whole run, is copied first.
+      if (elasticNow) Kmod = Kelastic_;
+      fem::SparseMatrix& A = elasticNow ? Kmod : K_;
       A.makeCompressed();
       const int* outer = A.outerIndexPtr();
       const int* rows = A.innerIndexPtr();
@@ -180,6 +227,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
       for (int j = 0; j < A.outerSize(); ++j)
         for (int p = outer[j]; p < outer[j + 1]; ++p)
           if (fixed[j] || fixed[rows[p]]) values[p] = rows[p] == j ? 1.0 : 0.0;
+      factorized_ = Factorized::None;
       try {
         if (!analyzed_) {
           solver.analyze(A);
@@ -187,6 +235,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
         }
         solver.factorize(A);
       } catch (const SingularMatrixError& e) {
+        printRow(elasticNow ? "ELASTIQUE" : "TANGENTE");
         std::string where;
         const int col = e.column() >= 0 ? e.column() : e.row();
         if (col >= 0 && col < nm) {
@@ -203,7 +252,8 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
         throw Error(std::string(e.what()) + where);
       }
       ++stats_.factorizations;
-      lastFixed = fixed;
+      factorized_ = elasticNow ? Factorized::Elastic : Factorized::Tangent;
+      lastFixed_ = fixed;
     }
     for (int i = 0; i < n_; ++i)
       if (fixed[i]) rhs(i) = dUc(i);
@@ -211,8 +261,15 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     solver.solve(rhs, dU);
     stats_.solveSeconds += seconds(solveStart);
     U += dU;
+    printRow(!refactor ? "" : elasticNow ? "ELASTIQUE" : "TANGENTE");
     statusChanged = terms_ ? terms_->updateStatus(U) : false;
   }
+}
+
+void StaticNonlinear::finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt) {
+  previousIncrement_ = U - Ustart;
+  previousDt_ = dt;
+  ++steps_;
 }
 
 const LinearSolverStatistics& StaticNonlinear::solverStatistics() const { return solver_->solver->statistics(); }
@@ -224,10 +281,15 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
   std::vector<double> history;
   std::function<bool(double, double, int, std::string&)> interval = [&](double t0, double t1, int level,
                                                                         std::string& why) {
-    const Eigen::VectorXd U0 = U;
+    const Eigen::VectorXd U0 = U, increment0 = previousIncrement_;
+    const double dt0 = previousDt_;
+    const int steps0 = steps_;
     if (terms_) terms_->saveStatus();
     if (solveStep(U, t0, t1, history, why)) return true;
     U = U0;
+    previousIncrement_ = increment0;  // sub-steps start again from the last state kept
+    previousDt_ = dt0;
+    steps_ = steps0;
     if (terms_) terms_->restoreStatus();
     if (level >= settings_.subdNiveau || settings_.subdPas < 2) return false;
     ++stats_.cuts;
@@ -251,10 +313,12 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
                                             : ""));
     }
     Eigen::VectorXd reactions = r_;
+    Eigen::VectorXd internalForces = fint_;
     ConvergedInstant c;
     c.time = times[k];
     c.U = &U;
     c.reactions = &reactions;
+    c.internalForces = &internalForces;
     c.iterations = static_cast<int>(history.size()) - 1;
     c.residuals = history;
     converged(c);

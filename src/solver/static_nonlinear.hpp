@@ -16,14 +16,27 @@
 
 namespace aster::solver {
 
+// NEWTON/PREDICTION: the first iteration of each step.
+enum class Prediction {
+  Tangent,       // the tangent at the last converged state (REAC_INCR: or the last factorization)
+  Elastic,       // the elastic matrix (MATRICE='ELASTIQUE''s)
+  Extrapolated,  // start from U_n + (dt_{n+1}/dt_n)(U_n - U_{n-1}), then iterate with MATRICE
+};
+
 struct NewtonSettings {
   bool elasticMatrix = false;  // MATRICE='ELASTIQUE': the tangent at U = 0, kept
+  Prediction prediction = Prediction::Tangent;
   int reacIter = 1;            // REAC_ITER: reassemble the tangent every n iterations (0: never)
-  bool useRela = true;         // RESI_GLOB_RELA, else RESI_GLOB_MAXI
+  int reacIncr = 1;            // REAC_INCR: reassemble the prediction's tangent every n steps (0: first only)
+  bool arret = true;           // ARRET='NON': accept a step after ITER_GLOB_MAXI iterations
+  bool useRela = true;         // RESI_GLOB_RELA is a criterion
+  bool useMaxi = false;        // RESI_GLOB_MAXI is a criterion (both given: both must hold)
   double resiGlobRela = 1e-6;
   double resiGlobMaxi = 1e-6;
   int iterGlobMaxi = 10;
   std::string method = "UMFPACK";
+  std::string renum = "AUTO";  // SOLVEUR/RENUM
+  int nprec = 8;               // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
   int subdPas = 4;     // SUBD_PAS
   int subdNiveau = 3;  // SUBD_NIVEAU (0: no cutting)
   bool print = true;   // the convergence table
@@ -33,6 +46,7 @@ struct ConvergedInstant {
   double time = 0;
   const Eigen::VectorXd* U = nullptr;         // all unknowns
   const Eigen::VectorXd* reactions = nullptr;  // fint - fext (+ terms), nonzero at supports
+  const Eigen::VectorXd* internalForces = nullptr;  // fint = int B^T sigma, per mechanical DOF (FORC_NODA)
   int iterations = 0;
   std::vector<double> residuals;  // RESI_GLOB_RELA (or MAXI) per iteration
 };
@@ -60,6 +74,7 @@ class StaticNonlinear {
  private:
   struct Attempt;
   bool solveStep(Eigen::VectorXd& U, double t0, double t1, std::vector<double>& history, std::string& why);
+  void finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt);
   void buildPattern();
   void assemble(const Eigen::VectorXd& U, double t, bool withMatrix);
 
@@ -75,6 +90,14 @@ class StaticNonlinear {
   struct SolverHolder;
   std::shared_ptr<SolverHolder> solver_;
   bool analyzed_ = false;
+  // What the linear solver holds factorized, and the unknowns that were eliminated.
+  enum class Factorized { None, Tangent, Elastic };
+  Factorized factorized_ = Factorized::None;
+  std::vector<char> lastFixed_;
+  // The last converged (sub-)step, for PREDICTION='EXTRAPOLE' and REAC_INCR.
+  Eigen::VectorXd previousIncrement_;
+  double previousDt_ = 0;
+  int steps_ = 0;
 };
 
 }  // namespace aster::solver

@@ -62,10 +62,30 @@ void UmfpackSolver::analyze(const SparseMatrix& A) {
   freeSymbolic();
   pattern_.record(M);
   const int n = static_cast<int>(M.rows());
+  // RENUM: AMD and COLAMD are UMFPACK's orderings of its symmetric and unsymmetric strategies.
+  umfpack_di_defaults(control_);
+  if (ordering_ == "AMD") {
+    control_[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+    control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
+  } else if (ordering_ == "COLAMD") {
+    control_[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_UNSYMMETRIC;
+    control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
+  } else if (ordering_ == "METIS") {
+    control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
+  } else if (ordering_ == "SANS") {
+    control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_NONE;
+  }
   const int status = umfpack_di_symbolic(n, n, M.outerIndexPtr(), M.innerIndexPtr(), M.valuePtr(), &symbolic_,
                                          control_, info_);
   if (status != UMFPACK_OK) symbolic_ = nullptr;
   requireOk(status, "symbolic analysis");
+  const bool symmetric = info_[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC;
+  switch (static_cast<int>(info_[UMFPACK_ORDERING_USED])) {
+    case UMFPACK_ORDERING_AMD: stats_.ordering = symmetric ? "AMD" : "COLAMD"; break;
+    case UMFPACK_ORDERING_METIS: stats_.ordering = "METIS"; break;
+    case UMFPACK_ORDERING_NONE: stats_.ordering = "natural"; break;
+    default: stats_.ordering = "other"; break;
+  }
 }
 
 void UmfpackSolver::factorize(const SparseMatrix& A) {

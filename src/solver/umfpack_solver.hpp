@@ -15,6 +15,7 @@ class UmfpackSolver : public LinearSolver {
   void factorize(const SparseMatrix& A) override;
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
   std::string name() const override { return "UMFPACK"; }
+  std::vector<std::string> orderings() const override { return {"AUTO", "AMD", "COLAMD", "METIS", "SANS"}; }
 
  private:
   void auditFactor() const;

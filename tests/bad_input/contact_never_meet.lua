@@ -1,5 +1,5 @@
 -- expect-exit: 2
--- expect-output: <F> <STAT_NON_LINE> .*contact_never_meet\.lua:14: UMFPACK: the matrix is numerically singular: .* the structure may be free to move \(missing Dirichlet conditions\?\) or the matrix is very ill conditioned \(unknown DX of node N3\) \(contact: 0 points in contact\). 1 instant\(s\) were stored before the failure
+-- expect-output: <F> <STAT_NON_LINE> .*contact_never_meet\.lua:14: UMFPACK: the matrix is numerically singular: .* the structure may be free to move \(missing Dirichlet conditions\?\) or the matrix is very ill conditioned \(unknown DX of node N3\) \(contact: 0 points in contact, 0 nodes, residual 0.00E\+00\). 1 instant\(s\) were stored before the failure
 -- Contact surfaces that never meet: the master segment lies far to the side of the
 -- slave edge, so nothing holds the body up: the message names the free motion.
 DEBUT{}

@@ -1,5 +1,5 @@
 -- expect-exit: 2
--- expect-output: <F> <STAT_NON_LINE> .*snl_inst_fin_absent\.lua:12: INCREMENT/INST_INIT=0\.300000 is not an instant of LIST_INST
+-- expect-output: <F> <STAT_NON_LINE> .*snl_inst_fin_absent\.lua:12: INCREMENT/INST_INIT=0\.3 is not an instant of LIST_INST
 -- INCREMENT/INST_INIT that is not an instant of the list.
 DEBUT{}
 DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}

@@ -542,3 +542,103 @@ TEST(ContinueQuadratic, SeparatedMultiplierBlockAndGaussPointCount) {
 TEST(ContinueQuadratic, NewtonConvergesQuadraticallyOnASpringLoadedSlave) {
   newtonOnASpringLoadedSlave(MultiplierInterpolation::Quadratic);
 }
+
+// ------------------------------------------------ penalisation, forced statuses
+
+TEST(ContinuePenalised, TangentMatchesFiniteDifferencesOnCurvedMasters) {
+  std::mt19937 gen(17);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const std::vector<Segment> twoMasters = {Segment::seg3({1.5, -0.05}, {0.5, 0.0}, {1.0, parabola(1.0)}),
+                                           Segment::seg3({0.5, 0.0}, {-0.5, -0.05}, {0.0, parabola(0.0)})};
+  int checked = 0, mixed = 0;
+  for (int k = 0; k < 40; ++k) {
+    const CellType type = k % 2 ? CellType::SEG3 : CellType::SEG2;
+    SlaveCell s = slaveAlong(type, 0.2 + 0.1 * u(gen), 0.8 + 0.1 * u(gen), gen, 0.01);
+    s.lagsC << 0.5 * u(gen) - 0.2, 0.5 * u(gen) - 0.2, 0.5 * u(gen) - 0.2;
+    std::vector<Segment> masters = twoMasters;
+    for (auto& m : masters)
+      for (int a = 0; a < m.nodes(); ++a) m.x.row(a) += 0.01 * Eigen::RowVector2d(u(gen), u(gen));
+    ContinueOptions o;
+    o.penalty = k % 3 ? 50 : 2;
+    o.gaussPoints = 3;
+    if (k % 4 == 0) o.multiplierInterpolation = MultiplierInterpolation::Quadratic;
+    if (k % 5 == 0) o.integration = ContactIntegration::Nodes;
+    ContinueCellTerms t;
+    continueCellTerms(s, masters, o, t);
+    bool nearSwitch = false;
+    int contact = 0;
+    for (const auto& p : t.points) {
+      nearSwitch = nearSwitch || std::abs(p.gap) < 1e-5;
+      contact += p.status == PointStatus::Contact;
+      EXPECT_EQ(p.status == PointStatus::Contact, p.gap <= 0);  // the penalised criterion
+      EXPECT_EQ(p.augmented, o.penalty * p.gap);
+    }
+    if (nearSwitch) continue;
+    SCOPED_TRACE(k);
+    if (!checkTangent(s, masters, o)) continue;
+    ++checked;
+    mixed += contact > 0 && contact < static_cast<int>(t.points.size());
+  }
+  EXPECT_GE(checked, 25);
+  EXPECT_GE(mixed, 3);
+}
+
+TEST(ContinuePenalised, FlatMasterHandCase) {
+  // Master y = 0 (normal +Y); SEG2 slave of reference length 2 penetrating by
+  // d everywhere, LAGS_C = kappa * (-d): the LAGS_C rows int L_v (g - lambda /
+  // kappa) vanish, the slave nodes get lambda * L0/2 * n_m each.
+  const std::vector<Segment> masters = {Segment::seg2({2, 0}, {-1, 0})};
+  SlaveCell s;
+  s.type = CellType::SEG2;
+  s.reference.row(0) << 0, -1;
+  s.reference.row(1) << 2, -1;
+  const double d = 2e-3, kappa = 300.0;
+  s.current.row(0) << 0, -d;
+  s.current.row(1) << 1, -d;
+  s.lagsC << -kappa * d, -kappa * d, 0;
+  ContinueOptions o;
+  o.penalty = kappa;
+  ContinueCellTerms t;
+  continueCellTerms(s, masters, o, t);
+  for (const auto& p : t.points) EXPECT_EQ(p.status, PointStatus::Contact);
+  EXPECT_NEAR(t.residual.segment<2>(t.lagrangeOffset).norm(), 0, 1e-15);
+  EXPECT_NEAR(t.residual(1), -kappa * d, 1e-13);
+  EXPECT_NEAR(t.residual(3), -kappa * d, 1e-13);
+  // Separated (above the master): -int L_v lambda / kappa, the mass matrix of
+  // the linear L on a length 2: [2/3 1/3; 1/3 2/3].
+  s.current.col(1).setConstant(d);
+  s.lagsC << -3, 6, 0;
+  continueCellTerms(s, masters, o, t);
+  for (const auto& p : t.points) EXPECT_EQ(p.status, PointStatus::Separated);
+  EXPECT_NEAR(t.residual(t.lagrangeOffset), -(2.0 / 3 * -3 + 1.0 / 3 * 6) / kappa, 1e-15);
+  EXPECT_NEAR(t.residual(t.lagrangeOffset + 1), -(1.0 / 3 * -3 + 2.0 / 3 * 6) / kappa, 1e-15);
+  o.penalty = -1;
+  EXPECT_THROW(continueCellTerms(s, masters, o, t), aster::Error);
+}
+
+TEST(ContinueForcedStatus, OverridesTheCriterionOfPairedPoints) {
+  // CONTACT_INIT: a separated cell forced into contact and a penetrating one
+  // forced apart; unpaired points stay unpaired.
+  const std::vector<Segment> masters = {Segment::seg2({2, 0}, {-1, 0})};
+  SlaveCell s;
+  s.type = CellType::SEG2;
+  s.reference.row(0) << 0, 0;
+  s.reference.row(1) << 1, 0;
+  s.current = s.reference;
+  s.current.col(1).setConstant(0.1);
+  ContinueOptions o;
+  ContinueCellTerms t;
+  o.forcedStatus = ForcedStatus::Contact;
+  continueCellTerms(s, masters, o, t);
+  for (const auto& p : t.points) EXPECT_EQ(p.status, PointStatus::Contact);
+  EXPECT_NEAR(t.residual(t.lagrangeOffset), 0.1 * 0.5, 1e-15);  // int L_1 g
+  s.current.col(1).setConstant(-0.1);
+  o.forcedStatus = ForcedStatus::Separated;
+  continueCellTerms(s, masters, o, t);
+  for (const auto& p : t.points) EXPECT_EQ(p.status, PointStatus::Separated);
+  EXPECT_EQ(t.residual.norm(), 0.0);  // lambda = 0
+  s.current.col(0).array() += 10;  // far from the master
+  o.forcedStatus = ForcedStatus::Contact;
+  continueCellTerms(s, masters, o, t);
+  for (const auto& p : t.points) EXPECT_EQ(p.status, PointStatus::Unpaired);
+}

@@ -64,3 +64,21 @@ TEST(Discrete, TolerancesDelayChanges) {
   const ActiveSetChange c = updateActiveSet({-1e-7, 0.0}, {0.0, 1e-9}, active, o);
   EXPECT_FALSE(c.changed());
 }
+
+TEST(Discrete, PenalisedActiveNodeTerms) {
+  // The same node, penalised with stiffness k: R_lambda = g - lambda / k,
+  // K_lambdalambda = -1 / k, the displacement terms unchanged; lambda = k g
+  // makes R_lambda vanish.
+  const double h = -0.01, lambda = -3.0, k = 200.0;
+  const NodeGap g = nodeToSegmentGap(Eigen::Vector2d(0.5, h), Segment::seg2({2, 0}, {-1, 0}));
+  const DiscreteNodeTerms exact = discreteNodeTerms(g, lambda, true);
+  const DiscreteNodeTerms t = discreteNodeTerms(g, lambda, true, k);
+  EXPECT_NEAR(t.residualLambda, h - lambda / k, 1e-15);
+  EXPECT_EQ(t.tangentLambdaLambda, -1 / k);
+  EXPECT_EQ((Eigen::VectorXd(t.residualU) - Eigen::VectorXd(exact.residualU)).norm(), 0.0);
+  EXPECT_EQ((Eigen::VectorXd(t.tangentULambda) - Eigen::VectorXd(exact.tangentULambda)).norm(), 0.0);
+  EXPECT_NEAR(discreteNodeTerms(g, k * h, true, k).residualLambda, 0.0, 1e-17);
+  // Inactive: lambda = 0 whatever k.
+  EXPECT_EQ(discreteNodeTerms(g, lambda, false, k).residualLambda, lambda);
+  EXPECT_THROW(discreteNodeTerms(g, lambda, true, -1.0), aster::Error);
+}

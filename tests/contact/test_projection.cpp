@@ -152,3 +152,19 @@ TEST(Projection, RejectsBadInput) {
   o.outsideTolerance = -1;
   EXPECT_THROW(projectOnSegment(Vector2d(0, 0), Segment::seg2({0, 0}, {1, 0}), o), aster::Error);
 }
+
+TEST(Projection, PairingDistanceLimit) {
+  // DIST_APPA: the closest valid projection is kept only within maxDistance.
+  const std::vector<Segment> m = {Segment::seg2({2, 0}, {-1, 0})};
+  ProjectionOptions o;
+  for (double limit : {-1.0, 0.5, 0.3001}) {
+    o.maxDistance = limit;
+    const MasterProjection p = projectOnMaster(Vector2d(0.5, 0.3), m, o);
+    ASSERT_TRUE(p.paired()) << limit;
+    EXPECT_NEAR(p.projection.gap, 0.3, 1e-15);
+  }
+  o.maxDistance = 0.2999;
+  EXPECT_FALSE(projectOnMaster(Vector2d(0.5, 0.3), m, o).paired());
+  EXPECT_FALSE(projectOnMaster(Vector2d(0.5, -0.3), m, o).paired());  // penetration counts as distance too
+  EXPECT_TRUE(projectOnMaster(Vector2d(0.5, -0.2), m, o).paired());
+}
