@@ -2,12 +2,14 @@
 // mesh), EXTR (a field of a result at one instant, or the node coordinates),
 // EVAL (a field of functions at the values of parameter fields) and ASSE
 // (components of fields combined on parts of the mesh, with CUMUL and COEF_R).
-// ELGA / ELNO fields and DISC are not available yet.
+// Fields at Gauss points (ELGA_*, DISC towards them) are in elga_field.cpp;
+// ELNO fields are not available.
 #include <algorithm>
 #include <cstdio>
 #include <map>
 #include <set>
 
+#include "commands/elga_field.hpp"
 #include "commands/field_concepts.hpp"
 #include "commands/function_concepts.hpp"
 #include "commands/mesh_concept.hpp"
@@ -35,22 +37,7 @@ std::shared_ptr<mesh::Mesh> meshOfKeywords(const Keywords& k) {
   throw Error("give MAILLAGE or MODELE");
 }
 
-void checkComponentName(const FieldType& type, const std::string& cmp) {
-  bool ok = true;
-  if (type.quantity == "NEUT") {
-    ok = cmp.size() > 1 && cmp[0] == 'X' &&
-         std::all_of(cmp.begin() + 1, cmp.end(), [](char c) { return c >= '0' && c <= '9'; });
-  } else if (type.quantity == "GEOM") {
-    ok = cmp == "X" || cmp == "Y" || cmp == "Z";
-  } else if (type.quantity == "DEPL") {
-    static const std::set<std::string> names{"DX", "DY", "DZ", "DRX", "DRY", "DRZ", "LAGS_C", "LAGS_F1", "LAGS_F2"};
-    ok = names.count(cmp) > 0;
-  }
-  if (!ok)
-    throw Error("component " + cmp + " does not belong to the quantity " + type.quantity +
-                (type.quantity == "NEUT" ? " (X1, X2, ...)" : type.quantity == "GEOM" ? " (X, Y, Z)"
-                                                                                   : " (DX, DY, DZ, LAGS_C, ...)"));
-}
+void checkComponentName(const FieldType& type, const std::string& cmp) { checkComponentOfQuantity(type.quantity, cmp); }
 
 // The support list: sorted, and empty when it is every node of the mesh.
 std::vector<int> normalisedSupport(const std::set<int>& nodes, int nodeCount) {
@@ -138,7 +125,8 @@ ConceptPtr extr(const Keywords& k, const FieldType& type, const std::string& typ
   const ResultInstant& inst = instantOf(*result, k);
   for (const auto& g : inst.gauss)
     if (g.name == name)
-      throw Error("NOM_CHAM='" + name + "' is a field at Gauss points: ELGA fields are not available yet in CREA_CHAMP");
+      throw Error("NOM_CHAM='" + name + "' is a field at Gauss points: TYPE_CHAM='ELGA_" + name.substr(0, name.find('_')) +
+                  "_R', not " + typeCham);
   const mesh::NodalField& f = ResultConcept::nodalField(inst, name);
   const std::string expected = (name == "DEPL" || name == "REAC_NODA" || name == "FORC_NODA") ? "DEPL"
                                : (name == "SIEF_NOEU" || name == "SIGM_NOEU") ? "SIEF" : "";
@@ -159,6 +147,8 @@ ConceptPtr eval(const Keywords& k, const FieldType& type, const std::string& typ
     throw Error("OPERATION='EVAL' gives a NOEU_NEUT_R field, not " + typeCham);
   const auto fc = k.conceptPtr("CHAM_F");
   const auto ff = std::dynamic_pointer_cast<FunctionFieldConcept>(fc);
+  if (std::dynamic_pointer_cast<ElgaFieldConcept>(fc))
+    throw Error("CHAM_F: " + session.nameOf(*fc) + " is a field at Gauss points; its evaluation is TYPE_CHAM='ELGA_NEUT_R'");
   if (!ff)
     throw Error("CHAM_F: " + session.nameOf(*fc) + " is not a field of functions (make one with CREA_CHAMP{OPERATION='AFFE', TYPE_CHAM='NOEU_NEUT_F', ...})");
   // Parameter name -> (field, component index).
@@ -166,7 +156,7 @@ ConceptPtr eval(const Keywords& k, const FieldType& type, const std::string& typ
   std::string available;
   for (const auto& pc : k.concepts("CHAM_PARA")) {
     auto p = std::dynamic_pointer_cast<NodalFieldConcept>(pc);
-    if (!p) throw Error("CHAM_PARA: " + session.nameOf(*pc) + " is not a nodal field");
+    if (!p) throw Error("CHAM_PARA: " + session.nameOf(*pc) + " is not a nodal field (CHAM_F is a nodal field of functions)");
     if (isFunctionField(*p)) throw Error("CHAM_PARA: " + session.nameOf(*pc) + " is a field of functions; give real fields");
     if (p->mesh != ff->mesh) throw Error("CHAM_PARA: " + session.nameOf(*pc) + " lies on another mesh than CHAM_F");
     for (std::size_t c = 0; c < p->field.components.size(); ++c) {
@@ -220,7 +210,9 @@ ConceptPtr asse(const Keywords& k, const FieldType& type, const std::string& typ
   for (const auto& occ : k.factor("ASSE")) {
     const auto sc = occ.conceptPtr("CHAM_GD");
     auto src = std::dynamic_pointer_cast<NodalFieldConcept>(sc);
-    if (!src) throw Error(occ.path + ": CHAM_GD " + session.nameOf(*sc) + " is not a nodal field (cham_elem: not available yet)");
+    if (!src)
+      throw Error(occ.path + ": CHAM_GD " + session.nameOf(*sc) + " is not a nodal field; TYPE_CHAM='" + typeCham +
+                  "' assembles nodal fields (fields at Gauss points assemble into ELGA_* fields)");
     if (isFunctionField(*src)) throw Error(occ.path + ": CHAM_GD " + session.nameOf(*sc) + " is a field of functions; evaluate it first (OPERATION='EVAL')");
     if (src->mesh != mesh) throw Error(occ.path + ": CHAM_GD " + session.nameOf(*sc) + " lies on another mesh");
     const auto names = occ.has("NOM_CMP") ? occ.texts("NOM_CMP") : src->field.components;
@@ -266,11 +258,19 @@ ConceptPtr creaChamp(const Keywords& k, Session& session, ConceptPtr) {
   const std::string typeCham = k.text("TYPE_CHAM");
   const std::string op = k.text("OPERATION");
   const FieldType type = parseType(typeCham);
-  if (type.support != "NOEU")
-    throw Error("TYPE_CHAM='" + typeCham + "': fields on cells (ELGA, ELNO) are not available yet; only NOEU_* fields");
-  if (op == "DISC") throw Error("OPERATION='DISC' is not available yet");
+  if (type.support != "NOEU" && type.support != "ELGA")
+    throw Error("TYPE_CHAM='" + typeCham + "': fields at the nodes of cells (ELNO) are not available; NOEU_* and ELGA_* fields are");
   if (op != "AFFE" && type.scalar == "F")
     throw Error("TYPE_CHAM='" + typeCham + "' (functions) is made by OPERATION='AFFE' only, not '" + op + "'");
+  if (type.support == "ELGA") return creaChampElga(k, session, typeCham, type.quantity, type.scalar == "F");
+  if (op == "DISC") {
+    const auto sc = k.conceptPtr("CHAM_GD");
+    if (std::dynamic_pointer_cast<GaussFieldConcept>(sc))
+      throw Error("OPERATION='DISC' from the field at Gauss points " + session.nameOf(*sc) + " to TYPE_CHAM='" + typeCham +
+                  "' is not possible: DISC moves nodal fields to the Gauss points (TYPE_CHAM='ELGA_*'), not back");
+    throw Error("OPERATION='DISC': CHAM_GD " + session.nameOf(*sc) + " is already a nodal field; TYPE_CHAM='" + typeCham +
+                "' is nodal too (DISC moves a nodal field to the Gauss points: TYPE_CHAM='ELGA_*')");
+  }
   ConceptPtr out;
   if (op == "AFFE") out = affe(k, type);
   else if (op == "EXTR") out = extr(k, type, typeCham);

@@ -22,6 +22,25 @@ class FunctionFieldConcept : public NodalFieldConcept {
   std::vector<expr::FunctionPtr> functions;
 };
 
+// Throws unless `cmp` is a component of the quantity (NEUT: X1, X2, ...; GEOM:
+// X, Y, Z; DEPL: DX, DY, DZ, DRX..., LAGS_C...); other quantities are not checked.
+inline void checkComponentOfQuantity(const std::string& quantity, const std::string& cmp) {
+  bool ok = true;
+  if (quantity == "NEUT") {
+    ok = cmp.size() > 1 && cmp[0] == 'X';
+    for (std::size_t i = 1; ok && i < cmp.size(); ++i) ok = cmp[i] >= '0' && cmp[i] <= '9';
+  } else if (quantity == "GEOM") {
+    ok = cmp == "X" || cmp == "Y" || cmp == "Z";
+  } else if (quantity == "DEPL") {
+    static const char* names[] = {"DX", "DY", "DZ", "DRX", "DRY", "DRZ", "LAGS_C", "LAGS_F1", "LAGS_F2"};
+    ok = false;
+    for (const char* n : names) ok = ok || cmp == n;
+  }
+  if (!ok)
+    throw Error("component " + cmp + " does not belong to the quantity " + quantity +
+                (quantity == "NEUT" ? " (X1, X2, ...)" : quantity == "GEOM" ? " (X, Y, Z)" : " (DX, DY, DZ, LAGS_C, ...)"));
+}
+
 inline int componentIndex(const mesh::NodalField& f, const std::string& name, const std::string& fieldName) {
   for (std::size_t i = 0; i < f.components.size(); ++i)
     if (f.components[i] == name) return static_cast<int>(i);

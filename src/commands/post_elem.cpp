@@ -1,6 +1,12 @@
 // POST_ELEM NORME: the L2 norm of a nodal field (or of a result's field at some
 // instants) over the cells of the model or of groups; one row per group (and
-// per instant) in a table with column VALE_NORM.
+// per instant) in a table with column VALE_NORM. A field at Gauss points
+// (cham_elem, ELGA_*) is integrated at its points, those of the model's
+// integration scheme: sqrt(sum over cells and points of w_q |J_q| sum_c coef_c v_c^2).
+#include <algorithm>
+#include <cmath>
+
+#include "commands/elga_field.hpp"
 #include "commands/field_concepts.hpp"
 #include "commands/model_concepts.hpp"
 #include "commands/table_concept.hpp"
@@ -25,6 +31,88 @@ void checkSupport(const mesh::Mesh& mesh, const std::vector<int>& support, const
     for (int n : mesh.cellNodes(c))
       if (!in[n])
         throw Error(what + " is not defined at node " + mesh.nodeName(n) + " of cell " + mesh.cellName(c));
+}
+
+// The L2 norm of a field at Gauss points over `cells`.
+double elgaNorm(const mesh::Mesh& mesh, const GaussFieldConcept& f, const std::vector<int>& cells,
+                const std::vector<int>& comps, const std::vector<double>& weights, const std::string& what,
+                const std::string& part) {
+  std::vector<int> position(mesh.cellCount(), -1);
+  for (std::size_t k = 0; k < f.field.cells.size(); ++k) position[f.field.cells[k]] = static_cast<int>(k);
+  const std::size_t nc = f.field.components.size();
+  double sum = 0;
+  int dim = -1;
+  for (int cell : cells) {
+    const int k = position[cell];
+    if (k < 0)
+      throw Error("NORME: the field " + what + " is not defined on cell " + mesh.cellName(cell) + " of " + part);
+    for (int c : comps)
+      if (!componentPresent(f, static_cast<std::size_t>(k), static_cast<std::size_t>(c)))
+        throw Error("NORME: component " + f.field.components[c] + " of the field " + what +
+                    " is not defined on cell " + mesh.cellName(cell) + " of " + part +
+                    " (NOM_CMP chooses the components; CREA_CHAMP's PROL_ZERO='OUI' makes missing ones zero)");
+    const post::CellGaussPoints g = post::modelGaussPoints(mesh, cell);
+    if (dim >= 0 && g.dimension != dim)
+      throw Error("NORME: " + part + " mixes surface and edge cells (cell " + mesh.cellName(cell) +
+                  "); integrate surfaces and edges separately");
+    dim = g.dimension;
+    if (gaussPointsOf(f.field, static_cast<std::size_t>(k)) != g.count)
+      throw Error("NORME: the field " + what + " has " + std::to_string(gaussPointsOf(f.field, static_cast<std::size_t>(k))) +
+                  " points on cell " + mesh.cellName(cell) + "; the model integrates it with " + std::to_string(g.count));
+    const double* v = f.field.values.data() + f.field.offsets[k];
+    for (int q = 0; q < g.count; ++q)
+      for (std::size_t i = 0; i < comps.size(); ++i) {
+        const double x = v[q * nc + comps[i]];
+        sum += g.weights[q] * (weights.empty() ? 1.0 : weights[i]) * x * x;
+      }
+  }
+  if (cells.empty()) throw Error("NORME: no cell to integrate over in " + part);
+  return std::sqrt(sum);
+}
+
+// NORME of a field at Gauss points: one row per group.
+ConceptPtr elgaNorms(const Keywords& k, const Keywords& occ, const GaussFieldConcept& f, const model::Model& model,
+                     const std::vector<Part>& parts, const std::string& what) {
+  if (f.mesh.get() != &model.mesh()) throw Error("NORME: CHAM_GD lies on another mesh than the model");
+  if (const auto* e = dynamic_cast<const ElgaFieldConcept*>(&f); e && e->functionField)
+    throw Error("NORME: CHAM_GD " + what + " is a field of functions; evaluate it first (CREA_CHAMP OPERATION='EVAL')");
+  std::vector<std::string> names;
+  if (occ.has("NOM_CMP")) {
+    names = occ.texts("NOM_CMP");
+  } else {
+    for (const auto& c : f.field.components)
+      if (c.rfind("LAGS", 0) != 0) names.push_back(c);
+  }
+  std::vector<int> comps;
+  for (const auto& n : names) {
+    auto it = std::find(f.field.components.begin(), f.field.components.end(), n);
+    if (it == f.field.components.end()) {
+      std::string list;
+      for (const auto& c : f.field.components) list += (list.empty() ? "" : ", ") + c;
+      throw Error("NORME: NOM_CMP: the field " + what + " has no component " + n + " (components: " + list + ")");
+    }
+    comps.push_back(static_cast<int>(it - f.field.components.begin()));
+  }
+  std::vector<double> weights;
+  if (occ.has("COEF_MULT")) {
+    weights = occ.reals("COEF_MULT");
+    if (weights.size() != names.size())
+      throw Error("NORME: COEF_MULT has " + std::to_string(weights.size()) + " value(s) for " +
+                  std::to_string(names.size()) + " component(s)");
+  }
+  std::string cmpList;
+  for (const auto& n : names) cmpList += (cmpList.empty() ? "" : " ") + n;
+  post::Table table;
+  for (const auto& part : parts) {
+    const double norm = elgaNorm(model.mesh(), f, part.cells, comps, weights, what,
+                                 part.name == "TOUT" ? std::string("the model") : "GROUP_MA " + part.name);
+    table.addRow({{"GROUP_MA", post::TableValue::ofText(part.name)},
+                  {"NOM_CMP", post::TableValue::ofText(cmpList)},
+                  {"TYPE_NORM", post::TableValue::ofText("L2")},
+                  {"VALE_NORM", post::TableValue::ofReal(norm)}});
+  }
+  if (k.has("TITRE")) table.titles = k.texts("TITRE");
+  return std::make_shared<TableConcept>(table);
 }
 
 ConceptPtr postElem(const Keywords& k, Session& session, ConceptPtr) {
@@ -55,8 +143,10 @@ ConceptPtr postElem(const Keywords& k, Session& session, ConceptPtr) {
   std::shared_ptr<NodalFieldConcept> cham;
   if (occ.has("CHAM_GD")) {
     const auto c = occ.conceptPtr("CHAM_GD");
+    if (const auto g = std::dynamic_pointer_cast<GaussFieldConcept>(c))
+      return elgaNorms(k, occ, *g, *model, parts, session.nameOf(*c));
     cham = std::dynamic_pointer_cast<NodalFieldConcept>(c);
-    if (!cham) throw Error("NORME: CHAM_GD " + session.nameOf(*c) + " is not a nodal field (cham_elem: not available yet)");
+    if (!cham) throw Error("NORME: CHAM_GD " + session.nameOf(*c) + " is not a field");
     if (isFunctionField(*cham)) throw Error("NORME: CHAM_GD " + session.nameOf(*c) + " is a field of functions; evaluate it first");
     if (cham->mesh.get() != &mesh) throw Error("NORME: CHAM_GD lies on another mesh than the model");
     items.push_back({-1, 0, &cham->field, cham->support, session.nameOf(*c)});

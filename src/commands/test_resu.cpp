@@ -1,11 +1,13 @@
-// TEST_RESU: checks values of nodal fields (CHAM_NO) and of results (RESU): one
-// node and component, or TYPE_TEST over the field's support (SOMM_ABS: sum of
-// absolute values, SOMM: sum, MAX / MIN: signed extremes), all components or
-// NOM_CMP. Each check prints its .resu block and counts OK / NOOK.
+// TEST_RESU: checks values of nodal fields (CHAM_NO), of fields at Gauss points
+// (CHAM_ELEM) and of results (RESU): one node (or cell and Gauss point) and
+// component, or TYPE_TEST over the field's support (SOMM_ABS: sum of absolute
+// values, SOMM: sum, MAX / MIN: signed extremes), all components or NOM_CMP.
+// Each check prints its .resu block and counts OK / NOOK.
 #include <algorithm>
 #include <cmath>
 
 #include "commands/check_keywords.hpp"
+#include "commands/elga_field.hpp"
 #include "commands/field_concepts.hpp"
 #include "core/error.hpp"
 #include "lang/operators.hpp"
@@ -70,19 +72,107 @@ double fieldValue(const Keywords& occ, const mesh::Mesh& mesh, const mesh::Nodal
   return f.values[node * f.components.size() + componentIndex(f, occ.text("NOM_CMP"), fieldName)];
 }
 
+// The value an occurrence of CHAM_ELEM designates in a field at Gauss points:
+// TYPE_TEST over every cell, point and component it carries (or NOM_CMP), or
+// GROUP_MA (one cell) + POINT + NOM_CMP.
+double gaussValue(const Keywords& occ, const GaussFieldConcept& g, const std::string& fieldName, What& what) {
+  const GaussField& f = g.field;
+  const mesh::Mesh& mesh = *g.mesh;
+  const std::size_t nc = f.components.size();
+  if (occ.has("NOEUD") || occ.has("GROUP_NO"))
+    throw Error(occ.path + ": " + (occ.has("NOEUD") ? "NOEUD" : "GROUP_NO") +
+                " designates a node of a field at the nodes of cells (ELNO); " + fieldName +
+                " is at Gauss points: give GROUP_MA and POINT");
+  if (occ.has("SOUS_POINT")) throw Error(occ.path + ": SOUS_POINT: the field " + fieldName + " has no sub-points");
+  auto index = [&](const std::string& name) {
+    auto it = std::find(f.components.begin(), f.components.end(), name);
+    if (it == f.components.end()) {
+      std::string list;
+      for (const auto& c : f.components) list += (list.empty() ? "" : ", ") + c;
+      throw Error(occ.path + ": NOM_CMP: the field " + fieldName + " has no component " + name + " (components: " +
+                  list + ")");
+    }
+    return static_cast<std::size_t>(it - f.components.begin());
+  };
+  if (occ.has("TYPE_TEST")) {
+    if (occ.has("POINT")) throw Error(occ.path + ": POINT designates a point of the cell of GROUP_MA, not of TYPE_TEST");
+    std::vector<std::size_t> comps;
+    if (occ.has("NOM_CMP")) {
+      comps.push_back(index(occ.text("NOM_CMP")));
+      what.push_back({"NOM_CMP", occ.text("NOM_CMP")});
+    } else {
+      for (std::size_t c = 0; c < nc; ++c) comps.push_back(c);
+    }
+    const std::string test = occ.text("TYPE_TEST");
+    what.push_back({"TYPE_TEST", test});
+    double sum = 0, sumAbs = 0, mx = -HUGE_VAL, mn = HUGE_VAL;
+    bool any = false;
+    for (std::size_t k = 0; k < f.cells.size(); ++k)
+      for (std::size_t c : comps) {
+        if (!componentPresent(g, k, c)) continue;
+        for (int q = 0; q < gaussPointsOf(f, k); ++q) {
+          const double v = f.values[f.offsets[k] + q * nc + c];
+          sum += v;
+          sumAbs += std::abs(v);
+          mx = std::max(mx, v);
+          mn = std::min(mn, v);
+          any = true;
+        }
+      }
+    if (!any) throw Error(occ.path + ": TYPE_TEST='" + test + "': the field " + fieldName + " has no value to test");
+    return test == "SOMM_ABS" ? sumAbs : test == "SOMM" ? sum : test == "MAX" ? mx : mn;
+  }
+  const std::string group = occ.text("GROUP_MA");
+  const auto& cells = mesh.cellGroup(group);
+  if (cells.size() != 1)
+    throw Error(occ.path + ": GROUP_MA " + group + " holds " + std::to_string(cells.size()) +
+                " cells; a check needs a group of one cell");
+  const int cell = cells[0];
+  what.push_back({"GROUP_MA", group});
+  auto it = std::find(f.cells.begin(), f.cells.end(), cell);
+  if (it == f.cells.end())
+    throw Error(occ.path + ": the field " + fieldName + " is not defined on cell " + mesh.cellName(cell) + " (GROUP_MA " +
+                group + ")");
+  const std::size_t k = static_cast<std::size_t>(it - f.cells.begin());
+  const int points = gaussPointsOf(f, k);
+  if (!occ.has("POINT"))
+    throw Error(occ.path + ": POINT is missing: the Gauss point of cell " + mesh.cellName(cell) + " (1 to " +
+                std::to_string(points) + ")");
+  const long long point = occ.integer("POINT");
+  if (point < 1 || point > points)
+    throw Error(occ.path + ": POINT=" + std::to_string(point) + ": cell " + mesh.cellName(cell) + " has " +
+                std::to_string(points) + " Gauss points in the field " + fieldName);
+  what.push_back({"POINT", std::to_string(point)});
+  const std::size_t c = index(occ.text("NOM_CMP"));
+  if (!componentPresent(g, k, c))
+    throw Error(occ.path + ": component " + f.components[c] + " of the field " + fieldName +
+                " is not defined on cell " + mesh.cellName(cell));
+  what.push_back({"NOM_CMP", occ.text("NOM_CMP")});
+  return f.values[f.offsets[k] + (point - 1) * nc + c];
+}
+
 void record(Session& session, const Keywords& occ, double value, const What& what) {
   if (occ.text("VALE_ABS", "NON") == "OUI") value = std::abs(value);
   recordCheck(session, value, checkSpecOf(occ), what);
 }
 
 ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
-  if (!k.factor("CHAM_ELEM").empty()) throw Error("CHAM_ELEM: fields on cells are not available yet");
   for (const auto& occ : k.factor("CHAM_NO")) {
     const auto c = occ.conceptPtr("CHAM_GD");
     const auto f = std::dynamic_pointer_cast<NodalFieldConcept>(c);
     if (!f || isFunctionField(*f)) throw Error(occ.path + ": " + session.nameOf(*c) + " is not a field of real nodal values");
     What what{{"CHAM_NO", session.nameOf(*c)}};
     const double v = fieldValue(occ, *f->mesh, f->field, f->support, session.nameOf(*c), what);
+    record(session, occ, v, what);
+  }
+  for (const auto& occ : k.factor("CHAM_ELEM")) {
+    const auto c = occ.conceptPtr("CHAM_GD");
+    const auto g = std::dynamic_pointer_cast<GaussFieldConcept>(c);
+    if (!g) throw Error(occ.path + ": " + session.nameOf(*c) + " is not a field at Gauss points");
+    if (const auto* e = dynamic_cast<const ElgaFieldConcept*>(g.get()); e && e->functionField)
+      throw Error(occ.path + ": " + session.nameOf(*c) + " is a field of functions; evaluate it first (CREA_CHAMP OPERATION='EVAL')");
+    What what{{"CHAM_ELEM", session.nameOf(*c)}};
+    const double v = gaussValue(occ, *g, session.nameOf(*c), what);
     record(session, occ, v, what);
   }
   for (const auto& occ : k.factor("RESU")) {

@@ -92,7 +92,73 @@ void edgeCell(const mesh::Mesh& mesh, int cell, Accumulator& acc, EdgeInterpolat
   }
 }
 
+template <fem::CellType T>
+void surfaceGaussPoints(const mesh::Mesh& mesh, int cell, CellGaussPoints& g) {
+  using C = fem::Cell<T>;
+  const auto nodes = mesh.cellNodes(cell);
+  fem::NodeCoords<T> X;
+  for (int a = 0; a < C::nodes; ++a) {
+    const auto p = mesh.node(nodes[a]);
+    X(a, 0) = p(0);
+    X(a, 1) = p(1);
+  }
+  const auto& rule = fem::fullSurfaceRule(T);
+  for (int q = 0; q < rule.size(); ++q) {
+    const auto N = C::values(rule.points[q]);
+    const auto J = fem::jacobian<T>(X, C::gradients(rule.points[q]));
+    g.weights.push_back(rule.weights[q] * J.det);
+    for (int a = 0; a < C::nodes; ++a) g.shape.push_back(N(a));
+  }
+  g.count = rule.size();
+  g.nodes = C::nodes;
+  g.dimension = 2;
+}
+
+template <fem::CellType T>
+void edgeGaussPoints(const mesh::Mesh& mesh, int cell, CellGaussPoints& g) {
+  using C = fem::Cell<T>;
+  const auto nodes = mesh.cellNodes(cell);
+  Eigen::Matrix<double, C::nodes, 2> X;
+  for (int a = 0; a < C::nodes; ++a) {
+    const auto p = mesh.node(nodes[a]);
+    X(a, 0) = p(0);
+    X(a, 1) = p(1);
+  }
+  const auto& rule = fem::fullEdgeRule(T);
+  for (int q = 0; q < rule.size(); ++q) {
+    const auto N = C::values(rule.points[q]);
+    const Eigen::Vector2d t = X.transpose() * C::gradients(rule.points[q]);
+    g.weights.push_back(rule.weights[q] * t.norm());
+    for (int a = 0; a < C::nodes; ++a) g.shape.push_back(N(a));
+  }
+  g.count = rule.size();
+  g.nodes = C::nodes;
+  g.dimension = 1;
+}
+
 }  // namespace
+
+CellGaussPoints modelGaussPoints(const mesh::Mesh& mesh, int cell) {
+  const fem::CellType t = fem::referenceCell(mesh.cellType(cell), "fields at Gauss points");
+  CellGaussPoints g;
+  if (fem::cellDimension(t) == 2)
+    fem::dispatchSurface(t, [&](auto tag) { surfaceGaussPoints<decltype(tag)::value>(mesh, cell, g); });
+  else
+    fem::dispatchEdge(t, [&](auto tag) { edgeGaussPoints<decltype(tag)::value>(mesh, cell, g); });
+  const auto nodes = mesh.cellNodes(cell);
+  g.xyz.assign(3 * static_cast<std::size_t>(g.count), 0.0);
+  for (int q = 0; q < g.count; ++q)
+    for (int a = 0; a < g.nodes; ++a) {
+      const auto p = mesh.node(nodes[a]);
+      for (int d = 0; d < 3; ++d) g.xyz[3 * q + d] += g.shape[q * g.nodes + a] * p(d);
+    }
+  return g;
+}
+
+int modelGaussPointCount(mesh::CellType type) {
+  const fem::CellType t = fem::referenceCell(type, "fields at Gauss points");
+  return fem::cellDimension(t) == 2 ? fem::fullSurfaceRule(t).size() : fem::fullEdgeRule(t).size();
+}
 
 L2Result l2Norms(const mesh::Mesh& mesh, const std::vector<int>& cells, const NodalValues& field,
                  const std::vector<ExactFunction>& exact, EdgeInterpolation edges) {
