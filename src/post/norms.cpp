@@ -13,6 +13,18 @@
 namespace aster::post {
 namespace {
 
+// The cell's node coordinates (x, y), a row per node.
+template <fem::CellType T>
+fem::NodeCoords<T> coordinatesOf(const mesh::Mesh& mesh, int cell) {
+  const auto nodes = mesh.cellNodes(cell);
+  fem::NodeCoords<T> X;
+  for (int a = 0; a < fem::Cell<T>::nodes; ++a) {
+    const auto p = mesh.node(nodes[a]);
+    X(a, 0) = p(0);
+    X(a, 1) = p(1);
+  }
+  return X;
+}
 
 struct Accumulator {
   const NodalValues& field;
@@ -42,12 +54,7 @@ template <fem::CellType T>
 void surfaceCell(const mesh::Mesh& mesh, int cell, Accumulator& acc) {
   using C = fem::Cell<T>;
   const auto nodes = mesh.cellNodes(cell);
-  fem::NodeCoords<T> X;
-  for (int a = 0; a < C::nodes; ++a) {
-    const auto p = mesh.node(nodes[a]);
-    X(a, 0) = p(0);
-    X(a, 1) = p(1);
-  }
+  const fem::NodeCoords<T> X = coordinatesOf<T>(mesh, cell);
   // Field of degree p, exact solutions smooth: a rule exact to 2p+2 at least
   // (2p+4 on quadrangles, whose map adds degree; the triangle rules stop at 6).
   const bool triangle = T == fem::CellType::TRIA3 || T == fem::CellType::TRIA6;
@@ -67,12 +74,7 @@ template <fem::CellType T>
 void edgeCell(const mesh::Mesh& mesh, int cell, Accumulator& acc, EdgeInterpolation mode) {
   using C = fem::Cell<T>;
   const auto nodes = mesh.cellNodes(cell);
-  Eigen::Matrix<double, C::nodes, 2> X;
-  for (int a = 0; a < C::nodes; ++a) {
-    const auto p = mesh.node(nodes[a]);
-    X(a, 0) = p(0);
-    X(a, 1) = p(1);
-  }
+  const fem::NodeCoords<T> X = coordinatesOf<T>(mesh, cell);
   const auto& rule = fem::edgeRule(2 * C::degree + 4);
   for (int q = 0; q < rule.size(); ++q) {
     const auto& xi = rule.points[q];
@@ -95,13 +97,7 @@ void edgeCell(const mesh::Mesh& mesh, int cell, Accumulator& acc, EdgeInterpolat
 template <fem::CellType T>
 void surfaceGaussPoints(const mesh::Mesh& mesh, int cell, CellGaussPoints& g) {
   using C = fem::Cell<T>;
-  const auto nodes = mesh.cellNodes(cell);
-  fem::NodeCoords<T> X;
-  for (int a = 0; a < C::nodes; ++a) {
-    const auto p = mesh.node(nodes[a]);
-    X(a, 0) = p(0);
-    X(a, 1) = p(1);
-  }
+  const fem::NodeCoords<T> X = coordinatesOf<T>(mesh, cell);
   const auto& rule = fem::fullSurfaceRule(T);
   for (int q = 0; q < rule.size(); ++q) {
     const auto N = C::values(rule.points[q]);
@@ -117,13 +113,7 @@ void surfaceGaussPoints(const mesh::Mesh& mesh, int cell, CellGaussPoints& g) {
 template <fem::CellType T>
 void edgeGaussPoints(const mesh::Mesh& mesh, int cell, CellGaussPoints& g) {
   using C = fem::Cell<T>;
-  const auto nodes = mesh.cellNodes(cell);
-  Eigen::Matrix<double, C::nodes, 2> X;
-  for (int a = 0; a < C::nodes; ++a) {
-    const auto p = mesh.node(nodes[a]);
-    X(a, 0) = p(0);
-    X(a, 1) = p(1);
-  }
+  const fem::NodeCoords<T> X = coordinatesOf<T>(mesh, cell);
   const auto& rule = fem::fullEdgeRule(T);
   for (int q = 0; q < rule.size(); ++q) {
     const auto N = C::values(rule.points[q]);
