@@ -215,13 +215,11 @@ ConceptPtr asse(const Keywords& k, const FieldType& type, const std::string& typ
                   "' assembles nodal fields (fields at Gauss points assemble into ELGA_* fields)");
     if (isFunctionField(*src)) throw Error(occ.path + ": CHAM_GD " + session.nameOf(*sc) + " is a field of functions; evaluate it first (OPERATION='EVAL')");
     if (src->mesh != mesh) throw Error(occ.path + ": CHAM_GD " + session.nameOf(*sc) + " lies on another mesh");
-    const auto names = occ.has("NOM_CMP") ? occ.texts("NOM_CMP") : src->field.components;
-    const auto resultNames = occ.has("NOM_CMP_RESU") ? occ.texts("NOM_CMP_RESU") : names;
-    if (names.size() != resultNames.size())
-      throw Error(occ.path + ": NOM_CMP has " + std::to_string(names.size()) + " component(s), NOM_CMP_RESU " +
-                  std::to_string(resultNames.size()));
-    const bool cumul = occ.text("CUMUL", "NON") == "OUI";
-    const double coef = occ.real("COEF_R", 1.0);
+    const AsseTerm term = asseTermOf(occ, src->field.components);
+    const auto& names = term.names;
+    const auto& resultNames = term.resultNames;
+    const bool cumul = term.cumul;
+    const double coef = term.coef;
     std::vector<char> inSource(nn, 0);
     for (int n : supportOf(*src)) inSource[n] = 1;
     std::vector<int> nodes;

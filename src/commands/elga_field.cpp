@@ -122,15 +122,6 @@ std::vector<int> cellPositions(const GaussFieldConcept& f) {
   return pos;
 }
 
-int gaussComponentIndex(const GaussField& f, const std::string& name, const std::string& fieldName) {
-  for (std::size_t i = 0; i < f.components.size(); ++i)
-    if (f.components[i] == name) return static_cast<int>(i);
-  std::string list;
-  for (const auto& c : f.components) list += (list.empty() ? "" : ", ") + c;
-  throw Error("the field " + fieldName + " has no component " + name + " (components: " +
-              (list.empty() ? "none" : list) + ")");
-}
-
 bool isFunctionElga(const GaussFieldConcept& f) {
   const auto* e = dynamic_cast<const ElgaFieldConcept*>(&f);
   return e && e->functionField;
@@ -356,19 +347,17 @@ ConceptPtr asse(const Keywords& k, const std::string& typeCham, const std::strin
     if (isFunctionElga(*src))
       throw Error(occ.path + ": CHAM_GD " + name + " is a field of functions; evaluate it first (OPERATION='EVAL')");
     if (src->mesh != model->meshPtr()) throw Error(occ.path + ": CHAM_GD " + name + " lies on another mesh than MODELE");
-    const auto names = occ.has("NOM_CMP") ? occ.texts("NOM_CMP") : src->field.components;
-    const auto resultNames = occ.has("NOM_CMP_RESU") ? occ.texts("NOM_CMP_RESU") : names;
-    if (names.size() != resultNames.size())
-      throw Error(occ.path + ": NOM_CMP has " + std::to_string(names.size()) + " component(s), NOM_CMP_RESU " +
-                  std::to_string(resultNames.size()));
-    const bool cumul = occ.text("CUMUL", "NON") == "OUI";
-    const double coef = occ.real("COEF_R", 1.0);
+    const AsseTerm term = asseTermOf(occ, src->field.components);
+    const auto& names = term.names;
+    const auto& resultNames = term.resultNames;
+    const bool cumul = term.cumul;
+    const double coef = term.coef;
     const auto positions = cellPositions(*src);
     const std::size_t snc = src->field.components.size();
     std::vector<int> sourceComps;
     for (const auto& n : names) {
       try {
-        sourceComps.push_back(gaussComponentIndex(src->field, n, name));
+        sourceComps.push_back(componentIndex(src->field.components, n, name));
       } catch (const Error& e) {
         throw Error(occ.path + ": NOM_CMP: " + e.what());
       }

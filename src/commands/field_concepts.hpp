@@ -41,13 +41,39 @@ inline void checkComponentOfQuantity(const std::string& quantity, const std::str
                 (quantity == "NEUT" ? " (X1, X2, ...)" : quantity == "GEOM" ? " (X, Y, Z)" : " (DX, DY, DZ, LAGS_C, ...)"));
 }
 
-inline int componentIndex(const mesh::NodalField& f, const std::string& name, const std::string& fieldName) {
-  for (std::size_t i = 0; i < f.components.size(); ++i)
-    if (f.components[i] == name) return static_cast<int>(i);
+inline int componentIndex(const std::vector<std::string>& components, const std::string& name,
+                          const std::string& fieldName) {
+  for (std::size_t i = 0; i < components.size(); ++i)
+    if (components[i] == name) return static_cast<int>(i);
   std::string list;
-  for (const auto& c : f.components) list += (list.empty() ? "" : ", ") + c;
+  for (const auto& c : components) list += (list.empty() ? "" : ", ") + c;
   throw Error("the field " + fieldName + " has no component " + name + " (components: " +
               (list.empty() ? "none" : list) + ")");
+}
+
+inline int componentIndex(const mesh::NodalField& f, const std::string& name, const std::string& fieldName) {
+  return componentIndex(f.components, name, fieldName);
+}
+
+// What an occurrence of ASSE takes from its CHAM_GD (nodal or at Gauss points alike):
+// components NOM_CMP (default: all of `available`) renamed NOM_CMP_RESU, times COEF_R,
+// added (CUMUL='OUI') or written over.
+struct AsseTerm {
+  std::vector<std::string> names, resultNames;
+  bool cumul = false;
+  double coef = 1.0;
+};
+
+inline AsseTerm asseTermOf(const Keywords& occ, const std::vector<std::string>& available) {
+  AsseTerm t;
+  t.names = occ.has("NOM_CMP") ? occ.texts("NOM_CMP") : available;
+  t.resultNames = occ.has("NOM_CMP_RESU") ? occ.texts("NOM_CMP_RESU") : t.names;
+  if (t.names.size() != t.resultNames.size())
+    throw Error(occ.path + ": NOM_CMP has " + std::to_string(t.names.size()) + " component(s), NOM_CMP_RESU " +
+                std::to_string(t.resultNames.size()));
+  t.cumul = occ.text("CUMUL", "NON") == "OUI";
+  t.coef = occ.real("COEF_R", 1.0);
+  return t;
 }
 
 // The nodes a field is defined on: its support, or every node of the mesh.
