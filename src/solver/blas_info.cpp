@@ -72,4 +72,15 @@ void selectBlasKernels(char** argv) {
 #endif
 }
 
+void chooseBlasThreads(int unknowns) {
+  if (getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS")) return;
+  using GetFunction = int (*)();
+  using SetFunction = void (*)(int);
+  static const auto get = reinterpret_cast<GetFunction>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  static const auto set = reinterpret_cast<SetFunction>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  if (!get || !set) return;
+  static const int all = get();  // what OpenBLAS chose at start-up, before any change
+  set(unknowns < kSmallSystem ? 1 : all);
+}
+
 }  // namespace aster::solver

@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
+#include "solver/blas_info.hpp"
 #include "solver/linear_solver.hpp"
 
 namespace aster::solver {
@@ -230,6 +231,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
       factorized_ = Factorized::None;
       try {
         if (!analyzed_) {
+          chooseBlasThreads(static_cast<int>(A.rows()));
           solver.analyze(A);
           analyzed_ = true;
         }
