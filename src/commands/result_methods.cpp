@@ -35,36 +35,27 @@ Datum accessParameters(Concept& self, const std::vector<Value>&, Session&) {
                        {"ITER_GLOB", Datum::ofList(iterations)}});
 }
 
-Datum fieldValues(Concept& self, const std::vector<Value>&, Session&) {
+// getValues and getComponents of a field concept, nodal or at Gauss points alike.
+template <class FieldConcept>
+Datum valuesOf(Concept& self, const std::vector<Value>&, Session&) {
   std::vector<Datum> out;
-  for (double v : static_cast<NodalFieldConcept&>(self).field.values) out.push_back(Datum::ofReal(v));
+  for (double v : static_cast<FieldConcept&>(self).field.values) out.push_back(Datum::ofReal(v));
   return Datum::ofList(out);
 }
 
-Datum fieldComponents(Concept& self, const std::vector<Value>&, Session&) {
+template <class FieldConcept>
+Datum componentsOf(Concept& self, const std::vector<Value>&, Session&) {
   std::vector<Datum> out;
-  for (const auto& c : static_cast<NodalFieldConcept&>(self).field.components) out.push_back(Datum::ofText(c));
-  return Datum::ofList(out);
-}
-
-Datum gaussValues(Concept& self, const std::vector<Value>&, Session&) {
-  std::vector<Datum> out;
-  for (double v : static_cast<GaussFieldConcept&>(self).field.values) out.push_back(Datum::ofReal(v));
-  return Datum::ofList(out);
-}
-
-Datum gaussComponents(Concept& self, const std::vector<Value>&, Session&) {
-  std::vector<Datum> out;
-  for (const auto& c : static_cast<GaussFieldConcept&>(self).field.components) out.push_back(Datum::ofText(c));
+  for (const auto& c : static_cast<FieldConcept&>(self).field.components) out.push_back(Datum::ofText(c));
   return Datum::ofList(out);
 }
 
 RegisterMethod m1("evol_noli", "getField", getField);
 RegisterMethod m2("evol_noli", "getAccessParameters", accessParameters);
-RegisterMethod m3("cham_no_sdaster", "getValues", fieldValues);
-RegisterMethod m4("cham_no_sdaster", "getComponents", fieldComponents);
-RegisterMethod m5("cham_elem", "getValues", gaussValues);
-RegisterMethod m6("cham_elem", "getComponents", gaussComponents);
+RegisterMethod m3("cham_no_sdaster", "getValues", valuesOf<NodalFieldConcept>);
+RegisterMethod m4("cham_no_sdaster", "getComponents", componentsOf<NodalFieldConcept>);
+RegisterMethod m5("cham_elem", "getValues", valuesOf<GaussFieldConcept>);
+RegisterMethod m6("cham_elem", "getComponents", componentsOf<GaussFieldConcept>);
 
 }  // namespace
 }  // namespace aster::lang
