@@ -1,20 +1,22 @@
 -- SSNP150 modelization B: convergence of the manufactured solution of 2D
 -- contact in large deformations under uniform mesh refinement (V6.03.150).
--- Plane strain, Saint Venant-Kirchhoff, E = 1, NU = 0; CONTINUE contact with
--- LAGS_C at the slave vertex nodes; five meshes from the reference code's own
+-- Plane strain, Saint Venant-Kirchhoff, E = 1, NU = 0.3 (as the reference
+-- study: DEFI_MATERIAU{ELAS=_F(E=E, NU=NU)} with NU=0.3); CONTINUE contact with
+-- LAGS_C at every slave node (quadratic along each SEG3, as the reference
+-- code's 2D contact elements); five meshes from the reference code's own
 -- mesh 0 (1 QUAD8), each QUAD8 of SURFACE split in 4 at every step, MAITRE
 -- (one SEG3 on the parabola) left as it is.
 DEBUT{CODE = {NIV_PUB_WEB = 'INTERNET'}}
 
 DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = '../meshes/ssnp150b.mail'}
 
-ACIER = DEFI_MATERIAU{ELAS = {E = 1.0, NU = 0.0}}
+ACIER = DEFI_MATERIAU{ELAS = {E = 1.0, NU = 0.3}}
 
 UX = FORMULE{VALE = '-0.2*Y**3*(X-0.5)', NOM_PARA = {'X', 'Y'}}
 UY = FORMULE{VALE = '-0.05*(X-0.5)**2*(1+Y) - 0.01*Y', NOM_PARA = {'X', 'Y'}}
 
 local nbmesh = 5
-local MA, h, errU, errP = {}, {}, {}, {}
+local MA, h, errU, errP, errUg, errPg = {}, {}, {}, {}, {}, {}
 MA[0] = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
 
 MMS = CALC_SOLU_MANU{DEPL = {DX = UX, DY = UY}, MATER = ACIER, MODELISATION = 'D_PLAN',
@@ -27,6 +29,38 @@ PRES_EX = MMS.BAS.PRES  -- exact contact pressure p(X, Y) along BAS
 RAMPE = DEFI_FONCTION{NOM_PARA = 'INST', VALE = {0, 0, 1, 1},
                       PROL_GAUCHE = 'LINEAIRE', PROL_DROITE = 'LINEAIRE'}
 LINST = DEFI_LIST_REEL{DEBUT = 0.0, INTERVALLE = {JUSQU_A = 1.0, NOMBRE = 10}}
+
+-- The reference study's NormeAster: the L2 errors of U over SURFACE and of the
+-- contact pressure LAGS_C over BAS, from fields at the Gauss points of the model
+-- (geometry, exact and computed values, their difference) integrated by
+-- POST_ELEM NORME. POST_ERREUR (in the loop) gives the same errors in one
+-- command, integrated with more points.
+local function norme_aster(UCALC, MAIL, MODELE)
+  local CHXN = CREA_CHAMP{TYPE_CHAM = 'NOEU_GEOM_R', OPERATION = 'EXTR', MAILLAGE = MAIL, NOM_CHAM = 'GEOMETRIE'}
+  local CHXG = CREA_CHAMP{TYPE_CHAM = 'ELGA_GEOM_R', OPERATION = 'DISC', MODELE = MODELE, CHAM_GD = CHXN}
+  local UANAG_F = CREA_CHAMP{TYPE_CHAM = 'ELGA_NEUT_F', OPERATION = 'AFFE', MODELE = MODELE, PROL_ZERO = 'OUI',
+                             AFFE = {GROUP_MA = 'SURFACE', NOM_CMP = {'X1', 'X2'}, VALE_F = {UX, UY}}}
+  local UANAG = CREA_CHAMP{TYPE_CHAM = 'ELGA_NEUT_R', OPERATION = 'EVAL', CHAM_F = UANAG_F, CHAM_PARA = CHXG}
+  local PANAG_F = CREA_CHAMP{TYPE_CHAM = 'ELGA_NEUT_F', OPERATION = 'AFFE', MODELE = MODELE, PROL_ZERO = 'OUI',
+                             AFFE = {GROUP_MA = 'BAS', NOM_CMP = 'X1', VALE_F = PRES_EX}}
+  local PANAG = CREA_CHAMP{TYPE_CHAM = 'ELGA_NEUT_R', OPERATION = 'EVAL', CHAM_F = PANAG_F, CHAM_PARA = CHXG}
+  local UCALG = CREA_CHAMP{TYPE_CHAM = 'ELGA_DEPL_R', OPERATION = 'DISC', MODELE = MODELE, CHAM_GD = UCALC,
+                           PROL_ZERO = 'OUI'}
+  local PCALC1 = CREA_CHAMP{TYPE_CHAM = 'NOEU_NEUT_R', OPERATION = 'ASSE', MAILLAGE = MAIL, ASSE = {
+    GROUP_MA = 'BAS', CHAM_GD = UCALC, NOM_CMP = 'LAGS_C', NOM_CMP_RESU = 'X1'}}
+  local PCALCG = CREA_CHAMP{TYPE_CHAM = 'ELGA_NEUT_R', OPERATION = 'DISC', MODELE = MODELE, CHAM_GD = PCALC1,
+                            PROL_ZERO = 'OUI'}
+  local DIFFUG = CREA_CHAMP{TYPE_CHAM = 'ELGA_DEPL_R', OPERATION = 'ASSE', MODELE = MODELE, PROL_ZERO = 'OUI', ASSE = {
+    {GROUP_MA = 'SURFACE', CHAM_GD = UCALG, NOM_CMP = {'DX', 'DY'}, CUMUL = 'OUI', COEF_R = 1.0},
+    {GROUP_MA = 'SURFACE', CHAM_GD = UANAG, NOM_CMP = {'X1', 'X2'}, NOM_CMP_RESU = {'DX', 'DY'},
+     CUMUL = 'OUI', COEF_R = -1.0}}}
+  local DIFFPG = CREA_CHAMP{TYPE_CHAM = 'ELGA_DEPL_R', OPERATION = 'ASSE', MODELE = MODELE, PROL_ZERO = 'OUI', ASSE = {
+    {GROUP_MA = 'BAS', CHAM_GD = PCALCG, NOM_CMP = 'X1', NOM_CMP_RESU = 'DX', CUMUL = 'OUI', COEF_R = 1.0},
+    {GROUP_MA = 'BAS', CHAM_GD = PANAG, NOM_CMP = 'X1', NOM_CMP_RESU = 'DX', CUMUL = 'OUI', COEF_R = -1.0}}}
+  local TABU = POST_ELEM{NORME = {TYPE_NORM = 'L2', GROUP_MA = 'SURFACE', CHAM_GD = DIFFUG, MODELE = MODELE}}
+  local TABP = POST_ELEM{NORME = {TYPE_NORM = 'L2', GROUP_MA = 'BAS', CHAM_GD = DIFFPG, MODELE = MODELE}}
+  return TABU:get('VALE_NORM', 1), TABP:get('VALE_NORM', 1)
+end
 
 for i = 0, nbmesh - 1 do
   MA[i] = MODI_MAILLAGE{reuse = MA[i], MAILLAGE = MA[i],
@@ -69,14 +103,16 @@ for i = 0, nbmesh - 1 do
   h[i + 1] = 1.0 / 2 ^ (i + 1)
   errU[i + 1] = EU:get('ERREUR', 1)
   errP[i + 1] = EP:get('ERREUR', 1)
-  print(string.format('mesh %d: %4d QUAD8, h = %.5f, |U - Uex| = %.6e, |p - pex| = %.6e',
-                      i, #MA[i]:getCells('SURFACE'), h[i + 1], errU[i + 1], errP[i + 1]))
+  errUg[i + 1], errPg[i + 1] = norme_aster(UCALC, MA[i], MO)
+  print(string.format('mesh %d: %4d QUAD8, h = %.5f, |U - Uex| = %.6e, |p - pex| = %.6e' ..
+                      ' (Gauss points of the model: %.6e, %.6e)',
+                      i, #MA[i]:getCells('SURFACE'), h[i + 1], errU[i + 1], errP[i + 1], errUg[i + 1], errPg[i + 1]))
 
   if i == nbmesh - 1 then
     -- Finest mesh: Newton takes at most 6 iterations per step (the issue's
     -- requirement; [1, 6] is 3.5 +- 2.5), and exactly these (non-regression).
     RESU4 = RESU
-    local iterations = {5, 3, 4, 4, 4, 3, 3, 3, 3, 3}
+    local iterations = {6, 4, 4, 5, 5, 3, 3, 3, 3, 3}
     for k = 1, 10 do
       TEST_RESU{RESU = {RESULTAT = RESU4, NUME_ORDRE = k, PARA = 'ITER_GLOB', VALE_CALC = iterations[k],
                         CRITERE = 'ABSOLU', REFERENCE = 'SOURCE_EXTERNE', VALE_REFE = 3.5, PRECISION = 2.5,
@@ -91,21 +127,6 @@ for i = 0, nbmesh - 1 do
       {GROUP_MA = 'SURFACE', CHAM_GD = UCALC, NOM_CMP = {'DX', 'DY'}, CUMUL = 'OUI', COEF_R = 1.0},
       {GROUP_MA = 'SURFACE', CHAM_GD = UANA, NOM_CMP = {'X1', 'X2'}, NOM_CMP_RESU = {'DX', 'DY'},
        CUMUL = 'OUI', COEF_R = -1.0}}}
-    -- The reference study's own way to the L2 error of U: fields at the Gauss
-    -- points of the model (geometry, exact and computed U, their difference)
-    -- integrated by POST_ELEM NORME; compared with POST_ERREUR's errU below.
-    local CHXG = CREA_CHAMP{TYPE_CHAM = 'ELGA_GEOM_R', OPERATION = 'DISC', MODELE = MO, CHAM_GD = CHXN}
-    local UANAG_F = CREA_CHAMP{TYPE_CHAM = 'ELGA_NEUT_F', OPERATION = 'AFFE', MODELE = MO,
-                               AFFE = {GROUP_MA = 'SURFACE', NOM_CMP = {'X1', 'X2'}, VALE_F = {UX, UY}}}
-    local UANAG = CREA_CHAMP{TYPE_CHAM = 'ELGA_NEUT_R', OPERATION = 'EVAL', CHAM_F = UANAG_F, CHAM_PARA = CHXG}
-    local UCALG = CREA_CHAMP{TYPE_CHAM = 'ELGA_DEPL_R', OPERATION = 'DISC', MODELE = MO, CHAM_GD = UCALC}
-    local DIFFG = CREA_CHAMP{TYPE_CHAM = 'ELGA_DEPL_R', OPERATION = 'ASSE', MODELE = MO, ASSE = {
-      {GROUP_MA = 'SURFACE', CHAM_GD = UCALG, NOM_CMP = {'DX', 'DY'}, CUMUL = 'OUI', COEF_R = 1.0},
-      {GROUP_MA = 'SURFACE', CHAM_GD = UANAG, NOM_CMP = {'X1', 'X2'}, NOM_CMP_RESU = {'DX', 'DY'},
-       CUMUL = 'OUI', COEF_R = -1.0}}}
-    ERRU_G = POST_ELEM{NORME = {TYPE_NORM = 'L2', GROUP_MA = 'SURFACE', CHAM_GD = DIFFG, MODELE = MO}}
-    print(string.format('|U - Uex| at the Gauss points of the model: %.10e (POST_ERREUR: %.10e)',
-                        ERRU_G:get('VALE_NORM', 1), errU[i + 1]))
     MA[i] = DEFI_GROUP{reuse = MA[i], MAILLAGE = MA[i],
                        CREA_GROUP_NO = {OPTION = 'NOEUD_ORDO', NOM = 'BAS_ord', GROUP_MA = 'BAS'}}
     local TPRES = POST_RELEVE_T{ACTION = {OPERATION = 'EXTRACTION', INTITULE = 'PRESSION', GROUP_NO = 'BAS_ord',
@@ -121,11 +142,15 @@ end
 -- Rates from the last two meshes: alpha = -log(e4/e3) / log(2).
 local alphaU = -math.log(errU[nbmesh] / errU[nbmesh - 1]) / math.log(2)
 local alphaP = -math.log(errP[nbmesh] / errP[nbmesh - 1]) / math.log(2)
-print(string.format('alpha_U = %.6f, alpha_p = %.6f', alphaU, alphaP))
+local alphaUg = -math.log(errUg[nbmesh] / errUg[nbmesh - 1]) / math.log(2)
+local alphaPg = -math.log(errPg[nbmesh] / errPg[nbmesh - 1]) / math.log(2)
+print(string.format('alpha_U = %.6f, alpha_p = %.6f (Gauss points of the model: %.6f, %.6f)',
+                    alphaU, alphaP, alphaUg, alphaPg))
 TAB = CREA_TABLE{LISTE = {{PARA = 'H', LISTE_R = h}, {PARA = 'ERREUR_U', LISTE_R = errU},
                           {PARA = 'ERREUR_P', LISTE_R = errP}}}
 IMPR_TABLE{TABLE = TAB}
-RATES = CREA_TABLE{LISTE = {{PARA = 'ALPHA_U', LISTE_R = {alphaU}}, {PARA = 'ALPHA_P', LISTE_R = {alphaP}}}}
+RATES = CREA_TABLE{LISTE = {{PARA = 'ALPHA_U', LISTE_R = {alphaU}}, {PARA = 'ALPHA_P', LISTE_R = {alphaP}},
+                            {PARA = 'ALPHA_U_G', LISTE_R = {alphaUg}}, {PARA = 'ALPHA_P_G', LISTE_R = {alphaPg}}}}
 
 -- Plots: the two convergence curves, the contact pressure against the exact one.
 IMPR_FONCTION{FORMAT = 'PNG', UNITE = 29, TITRE = 'SSNP150B: L2 error of the displacement',
@@ -156,22 +181,24 @@ IMPR_FONCTION{FORMAT = 'PNG', UNITE = 32, TITRE = 'SSNP150: exact pressure and g
               LEGENDE_X = 'X', LEGENDE_Y = 'p, gap'}
 TEST_FONCTION{VALEUR = {FONCTION = JEU_X, VALE_PARA = 0.2, VALE_CALC = 0.0, ORDRE_GRANDEUR = 1.0E-2}}
 
--- The checks of the reference study. The reference code's values differ from
--- ours on two counts, discussed in docs/verification/ssnp150.md: its MAX of DIFF
--- is 6.645E-07 (ours 2.999E-07 on the same mesh), and its alpha_p is 2.80 where a
--- pressure linear along each slave cell converges at best at rate 2 in L2 (ours 2.013).
-TEST_RESU{CHAM_NO = {CHAM_GD = DIFF, TYPE_TEST = 'MAX', VALE_CALC = 2.99858850736E-07}}
-TEST_TABLE{TABLE = RATES, NOM_PARA = 'ALPHA_U', VALE_CALC = 3.00208202264,
+-- The checks of the reference study, with its references (REFERENCE, VALE_REFE
+-- and PRECISION as there), then the reference code's own results (its VALE_CALC)
+-- as AUTRE_ASTER. Its rates come from the Gauss points of the model (its
+-- NormeAster, norme_aster here); POST_ERREUR's, integrated with more points, agree.
+TEST_RESU{CHAM_NO = {CHAM_GD = DIFF, TYPE_TEST = 'MAX', VALE_CALC = 6.64547245011E-07,
+                     REFERENCE = 'ANALYTIQUE', VALE_REFE = 6.62799356621E-07, PRECISION = 5.0E-3}}
+TEST_RESU{CHAM_NO = {CHAM_GD = DIFF, TYPE_TEST = 'MAX', VALE_CALC = 6.64547245011E-07,
+                     REFERENCE = 'AUTRE_ASTER', VALE_REFE = 6.64521646293E-07, PRECISION = 1.0E-3}}
+TEST_TABLE{TABLE = RATES, NOM_PARA = 'ALPHA_U_G', VALE_CALC = 3.00494975717,
            REFERENCE = 'ANALYTIQUE', VALE_REFE = 3.0, PRECISION = 1.0E-2}
-TEST_TABLE{TABLE = RATES, NOM_PARA = 'ALPHA_P', VALE_CALC = 2.01288132797,
-           REFERENCE = 'ANALYTIQUE', VALE_REFE = 2.0, PRECISION = 2.0E-2}
--- The reference study's way (Gauss point fields + POST_ELEM NORME) against
--- POST_ERREUR on the finest mesh. They integrate at different points: the model's
--- 3 x 3 Gauss points, POST_ERREUR 5 x 5. U - Uex is there mostly the QUAD8's cubic
--- interpolation error, like xi (xi^2 - 1) along each direction, whose square the
--- 3-point rule integrates to 0.7 of its value (2 (5/9) 0.6 (0.4)^2 = 0.1067 against
--- 16/105 = 0.1524): the Gauss point error is sqrt(0.7) times POST_ERREUR's.
-TEST_TABLE{TABLE = ERRU_G, NOM_PARA = 'VALE_NORM', VALE_CALC = 4.0856313265E-07,
-           REFERENCE = 'AUTRE_ASTER', VALE_REFE = math.sqrt(0.7) * errU[nbmesh], PRECISION = 1.0E-2}
-
+TEST_TABLE{TABLE = RATES, NOM_PARA = 'ALPHA_U_G', VALE_CALC = 3.00494975717,
+           REFERENCE = 'AUTRE_ASTER', VALE_REFE = 3.004929245872, PRECISION = 1.0E-3}
+TEST_TABLE{TABLE = RATES, NOM_PARA = 'ALPHA_P_G', VALE_CALC = 2.80400359545,
+           REFERENCE = 'ANALYTIQUE', VALE_REFE = 2.5, PRECISION = 0.15}
+TEST_TABLE{TABLE = RATES, NOM_PARA = 'ALPHA_P_G', VALE_CALC = 2.80400359545,
+           REFERENCE = 'AUTRE_ASTER', VALE_REFE = 2.803698874428, PRECISION = 1.0E-3}
+TEST_TABLE{TABLE = RATES, NOM_PARA = 'ALPHA_U', VALE_CALC = 3.00347714501,
+           REFERENCE = 'ANALYTIQUE', VALE_REFE = 3.0, PRECISION = 1.0E-2}
+TEST_TABLE{TABLE = RATES, NOM_PARA = 'ALPHA_P', VALE_CALC = 2.80428182646,
+           REFERENCE = 'ANALYTIQUE', VALE_REFE = 2.5, PRECISION = 0.15}
 FIN{}

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Derives, once and outside aster-lite, the loads of SSNP150 modelization B
-(NU = 0, D_PLAN, Saint Venant-Kirchhoff) as Python-syntax formula strings, as
+(E = 1, NU = 0.3, D_PLAN, Saint Venant-Kirchhoff) as Python-syntax formula strings, as
 the reference study does with sympy. Its output is pasted into
 studies/ssnp150b_formules.lua. Not part of the build: run by hand with sympy.
 """
@@ -12,8 +12,8 @@ U = Matrix([-Rational(1, 5) * Y**3 * (X - half),
             -Rational(1, 20) * (X - half)**2 * (1 + Y) - Rational(1, 100) * Y])
 gradU = Matrix(2, 2, lambda i, j: diff(U[i], (X, Y)[j]))
 F = eye(2) + gradU
-E, nu = 1, 0
-lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), Rational(E, 2 * (1 + nu))
+E, nu = 1, Rational(3, 10)
+lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
 Egl = (F.T * F - eye(2)) / 2
 Pi = F * (lam * Egl.trace() * eye(2) + 2 * mu * Egl)
 

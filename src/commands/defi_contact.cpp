@@ -86,8 +86,9 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
     } else {
       if (algo == "PENALISATION") zs.penalty = positive(z, "COEF_PENA_CONT");
       else zs.rho = positive(z, "COEF_CONT");
-      if (z.text("INTERPOL_LAGS_C", "LINEAIRE") == "QUADRATIQUE")
-        zs.multipliers = contact::MultiplierInterpolation::Quadratic;
+      zs.multipliers = z.text("INTERPOL_LAGS_C", "QUADRATIQUE") == "QUADRATIQUE"
+                           ? contact::MultiplierInterpolation::Quadratic
+                           : contact::MultiplierInterpolation::Linear;
       const std::string integration = z.text("INTEGRATION", "GAUSS");
       if (integration == "GAUSS") {
         zs.integration = contact::ContactIntegration::Gauss;

@@ -1,6 +1,7 @@
 // POST_ERREUR: L2 error of a computed nodal field against exact functions of
 // (X, Y): DEPL_* over surface cells (components DX, DY), LAGR_* over edges
-// (LAGS_C, linear between the vertices of each edge). One row per group, then
+// (LAGS_C), both interpolated with the cells' shape functions (a LAGS_C linear
+// along a SEG3 shows the mean of its ends at the middle node). One row per group, then
 // a row TOTAL: ERREUR (absolute, or relative to the exact norm) and REFERENCE
 // (the exact norm).
 #include <cmath>
@@ -73,16 +74,14 @@ ConceptPtr postErreur(const Keywords& k, Session& session, ConceptPtr) {
         throw Error(option + ": GROUP_MA " + groups[g] + " holds the " + mesh::cellTypeName(mesh.cellType(cell)) +
                     " cell " + mesh.cellName(cell) + "; displacements are integrated over surface cells");
       const auto nodes = mesh.cellNodes(cell);
-      const int used = lagr ? 2 : nodes.size();
-      for (int a = 0; a < used; ++a)
-        if (!inSupport[nodes[a]])
-          throw Error("CHAM_GD is not defined at node " + mesh.nodeName(nodes[a]) + " of cell " + mesh.cellName(cell));
+      for (int n : nodes)
+        if (!inSupport[n])
+          throw Error("CHAM_GD is not defined at node " + mesh.nodeName(n) + " of cell " + mesh.cellName(cell));
     }
     std::vector<post::ExactFunction> fns;
     for (std::size_t i = 0; i < cmps.size(); ++i)
       fns.push_back(exactOf(functionOf(exact[i][exact[i].size() == 1 ? 0 : g]), cmps[i]));
-    const auto r = post::l2Norms(mesh, cells, nv, fns,
-                                 lagr ? post::EdgeInterpolation::VertexLinear : post::EdgeInterpolation::ShapeFunctions);
+    const auto r = post::l2Norms(mesh, cells, nv, fns);
     err2 += r.error * r.error;
     ref2 += r.exact * r.exact;
     if (relative && r.exact == 0)

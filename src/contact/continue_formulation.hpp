@@ -10,11 +10,12 @@
 // separated; at convergence lambda = (Pi.N).n), and g the gap of x_s(xi)
 // against the master (projection.hpp, gap.hpp; g > 0 separated). The same L_v
 // interpolate the multiplier and its variation dlambda (test function):
-//   Linear (default, any slave; also a SEG2 in Quadratic mode), m = 2:
-//     LAGS_C at the two VERTEX nodes 1, 2 (a SEG3's middle node carries none),
-//     L = ((1-xi)/2, (1+xi)/2);
-//   Quadratic on a SEG3 slave, m = 3: LAGS_C at nodes 1, 2 and the middle
-//     node 3, L = the SEG3 shape functions (xi(xi-1)/2, xi(xi+1)/2, 1-xi^2).
+//   Quadratic on a SEG3 slave, m = 3 (code_aster's: its 2D slave contact
+//     elements carry LAGS_C on all three nodes): LAGS_C at nodes 1, 2 and the
+//     middle node 3, L = the SEG3 shape functions (xi(xi-1)/2, xi(xi+1)/2, 1-xi^2);
+//   Linear (any slave; also a SEG2 in Quadratic mode), m = 2: LAGS_C at the
+//     two VERTEX nodes 1, 2 (a SEG3's middle node carries none),
+//     L = ((1-xi)/2, (1+xi)/2).
 // Contact terms are integrated on the slave in the REFERENCE configuration,
 // dGamma_0 = |dX/dxi| dxi, by Gauss points (or at the nodes).
 // Quadrature degree (straight reference cell: |dX/dxi| constant; n Gauss

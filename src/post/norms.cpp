@@ -71,7 +71,7 @@ void surfaceCell(const mesh::Mesh& mesh, int cell, Accumulator& acc) {
 }
 
 template <fem::CellType T>
-void edgeCell(const mesh::Mesh& mesh, int cell, Accumulator& acc, EdgeInterpolation mode) {
+void edgeCell(const mesh::Mesh& mesh, int cell, Accumulator& acc) {
   using C = fem::Cell<T>;
   const auto nodes = mesh.cellNodes(cell);
   const fem::NodeCoords<T> X = coordinatesOf<T>(mesh, cell);
@@ -82,15 +82,9 @@ void edgeCell(const mesh::Mesh& mesh, int cell, Accumulator& acc, EdgeInterpolat
     const Eigen::Vector2d x = X.transpose() * N;
     const Eigen::Vector2d t = X.transpose() * C::gradients(xi);
     const double w = rule.weights[q] * t.norm();
-    if (mode == EdgeInterpolation::VertexLinear) {
-      const double s = xi(0);
-      const double L[2] = {0.5 * (1 - s), 0.5 * (1 + s)};
-      acc.add(w, x(0), x(1), L, nodes.begin(), 2);
-    } else {
-      double Na[C::nodes];
-      for (int a = 0; a < C::nodes; ++a) Na[a] = N(a);
-      acc.add(w, x(0), x(1), Na, nodes.begin(), C::nodes);
-    }
+    double Na[C::nodes];
+    for (int a = 0; a < C::nodes; ++a) Na[a] = N(a);
+    acc.add(w, x(0), x(1), Na, nodes.begin(), C::nodes);
   }
 }
 
@@ -151,7 +145,7 @@ int modelGaussPointCount(mesh::CellType type) {
 }
 
 L2Result l2Norms(const mesh::Mesh& mesh, const std::vector<int>& cells, const NodalValues& field,
-                 const std::vector<ExactFunction>& exact, EdgeInterpolation edges) {
+                 const std::vector<ExactFunction>& exact) {
   if (!field.values || field.componentCount <= 0) throw Error("L2 norm: no field values");
   if (field.values->size() != static_cast<std::size_t>(mesh.nodeCount()) * field.componentCount)
     throw Error("L2 norm: the field has " + std::to_string(field.values->size()) + " values; expected " +
@@ -177,7 +171,7 @@ L2Result l2Norms(const mesh::Mesh& mesh, const std::vector<int>& cells, const No
     if (d == 2) {
       fem::dispatchSurface(t, [&](auto tag) { surfaceCell<decltype(tag)::value>(mesh, cell, acc); });
     } else {
-      fem::dispatchEdge(t, [&](auto tag) { edgeCell<decltype(tag)::value>(mesh, cell, acc, edges); });
+      fem::dispatchEdge(t, [&](auto tag) { edgeCell<decltype(tag)::value>(mesh, cell, acc); });
     }
   }
   L2Result r;

@@ -2,10 +2,10 @@
 // functions and Gauss rules (POST_ELEM NORME, POST_ERREUR).
 //   Surface cells (TRIA3..QUAD9): the field is interpolated with the cell's
 //   shape functions, integrated with a rule exact to degree 2p+2 or more.
-//   Edge cells (SEG2, SEG3): either with the cell's shape functions, or (vertex
-//   mode) linearly between the two end nodes only, as the contact pressure
-//   LAGS_C of CONTINUE contact lives on vertices; integrated along the cell's
-//   length in the mesh's (undeformed) geometry.
+//   Edge cells (SEG2, SEG3): with the cell's shape functions too, integrated
+//   along the cell's length in the mesh's (undeformed) geometry. (A LAGS_C
+//   linear along a SEG3 shows the mean of its ends at the middle node, so
+//   this interpolation gives that linear pressure.)
 // Values are node-major: values[node * componentCount + c].
 #pragma once
 #include <functional>
@@ -25,8 +25,6 @@ struct NodalValues {
   std::vector<double> weights;  // per taken component (empty: all 1): sum w_c u_c^2
 };
 
-enum class EdgeInterpolation { ShapeFunctions, VertexLinear };
-
 struct L2Result {
   double error = 0;     // ||u_h - u||  (u = 0 when no exact function is given)
   double exact = 0;     // ||u||
@@ -38,8 +36,7 @@ struct L2Result {
 // of the field, of the exact solution (one function per taken component, or
 // none: then error == computed) and of their difference.
 L2Result l2Norms(const mesh::Mesh& mesh, const std::vector<int>& cells, const NodalValues& field,
-                 const std::vector<ExactFunction>& exact = {},
-                 EdgeInterpolation edges = EdgeInterpolation::ShapeFunctions);
+                 const std::vector<ExactFunction>& exact = {});
 
 // The integration points of the model on one cell, those the mechanics
 // integrates with and fields at Gauss points (ELGA) live on: the full rule of

@@ -48,9 +48,10 @@ struct ZoneSettings {
   double rho = 100.0;  // COEF_CONT (CONTINUE, ALGO_CONT='STANDARD')
   contact::ContactIntegration integration = contact::ContactIntegration::Gauss;  // CONTINUE: INTEGRATION
   int gaussPoints = 3;                                                            // ORDRE_INT
-  // LAGS_C at the vertex nodes, linear along a slave cell (code_aster's), or at
-  // every node of a SEG3 slave, quadratic (aster-lite's INTERPOL_LAGS_C='QUADRATIQUE').
-  contact::MultiplierInterpolation multipliers = contact::MultiplierInterpolation::Linear;
+  // LAGS_C at every node of a slave cell, quadratic along a SEG3 (code_aster's:
+  // INTERPOL_LAGS_C='QUADRATIQUE', the default), or at the vertex nodes only,
+  // linear along the cell (INTERPOL_LAGS_C='LINEAIRE').
+  contact::MultiplierInterpolation multipliers = contact::MultiplierInterpolation::Quadratic;
   // CONTINUE, CONTACT_INIT: the statuses of the first Newton iteration of the
   // computation (None: the criterion, i.e. 'INTERPENETRE'; Contact: 'OUI'; Separated: 'NON').
   contact::ForcedStatus initialStatus = contact::ForcedStatus::None;

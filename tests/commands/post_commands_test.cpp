@@ -143,7 +143,7 @@ TEST(PostCommands, PostElemAndPostErreur) {
   // ||DIFF||^2 = int 0.01 + (2y - y^2)^2 = 0.01 + 8/15 (QUAD8 holds both exactly).
   // UCALC = (x, 2y) against (X, 2Y): error 0, reference^2 = 1/3 + 4/3 = 5/3.
   // UCALC against (X + 0.1, Y^2): error^2 = 0.01 + 8/15, reference^2 = (1.1^3 - 0.1^3)/3 + 1/5.
-  // LAGS_C = x at the vertices of BAS against X^2: error^2 = int_0^1 (x - x^2)^2 = 1/30,
+  // LAGS_C = x at the nodes of BAS against X^2: error^2 = int_0^1 (x - x^2)^2 = 1/30,
   // reference^2 = 1/5.
   const auto r = run("norms", std::string(kFields) + R"(
 N = POST_ELEM{NORME={TYPE_NORM='L2', GROUP_MA='SURFACE', CHAM_GD=DIFF, MODELE=MODE}}
@@ -171,10 +171,22 @@ TEST_TABLE{TABLE=EL, NOM_PARA='ERREUR', FILTRE={NOM_PARA='GROUP_MA', VALE_K='BAS
            VALE_CALC=math.sqrt(1/30), TOLE_MACHINE=1e-12}
 TEST_TABLE{TABLE=EL, NOM_PARA='REFERENCE', FILTRE={NOM_PARA='GROUP_MA', VALE_K='BAS'},
            VALE_CALC=math.sqrt(0.2), TOLE_MACHINE=1e-12}
+-- LAGS_C = x^2 at every node of BAS's SEG3 (INTERPOL_LAGS_C='QUADRATIQUE'):
+-- the shape functions reproduce X^2, the error is 0.
+FQ = FORMULE{VALE='X*X', NOM_PARA={'X'}}
+CFQ = CREA_CHAMP{TYPE_CHAM='NOEU_NEUT_F', OPERATION='AFFE', MAILLAGE=MAIL,
+                 AFFE={GROUP_MA='BAS', NOM_CMP={'X1'}, VALE_F={FQ}}}
+CQ = CREA_CHAMP{TYPE_CHAM='NOEU_NEUT_R', OPERATION='EVAL', CHAM_F=CFQ, CHAM_PARA={GEOM}}
+UQ = CREA_CHAMP{TYPE_CHAM='NOEU_DEPL_R', OPERATION='ASSE', MAILLAGE=MAIL, ASSE={
+  {TOUT='OUI', CHAM_GD=UCALC},
+  {GROUP_MA='BAS', CHAM_GD=CQ, NOM_CMP={'X1'}, NOM_CMP_RESU={'LAGS_C'}}}}
+EQ = POST_ERREUR{OPTION='LAGR_ABSO', CHAM_GD=UQ, MODELE=MODE, GROUP_MA='BAS', LAGS_C=PX2}
+TEST_TABLE{TABLE=EQ, NOM_PARA='ERREUR', FILTRE={NOM_PARA='GROUP_MA', VALE_K='BAS'},
+           VALE_CALC=0.0, CRITERE='ABSOLU', TOLE_MACHINE=1e-12}
 print(string.format('rows=%d %s', EL:getNumberOfRows(), EL:get('GROUP_MA', 2)))
 )");
   EXPECT_EQ(r.status, 0) << r.err << r.out;
-  EXPECT_EQ(r.ok, 7);
+  EXPECT_EQ(r.ok, 8);
   EXPECT_NE(r.out.find("rows=2 TOTAL"), std::string::npos);
 }
 

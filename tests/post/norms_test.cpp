@@ -116,8 +116,8 @@ TEST(L2Errors, ZeroFieldAgainstLinearExactSolution) {
 
 namespace {
 // Two SEG3 cells along the direction (0.6, 0.8), arc length s in [0, 2]; the
-// vertex values are g(s) at s = 0, 1, 2, the mid nodes hold 99 (must be ignored
-// in vertex mode).
+// vertex values are g(s) at s = 0, 1, 2, the mid nodes hold 99 (each test sets
+// them).
 struct Chain {
   mesh::Mesh mesh;
   std::vector<int> cells;
@@ -135,24 +135,28 @@ Chain segChain(double (*g)(double)) {
 double arcLength(double x, double y) { return std::hypot(x, y); }
 }  // namespace
 
-TEST(L2Errors, Seg3VertexLinearAgainstLinearExactIsZero) {
-  const Chain c = segChain([](double s) { return 1 + 3 * s; });
+// A LAGS_C linear along each SEG3 (INTERPOL_LAGS_C='LINEAIRE') shows the mean
+// of its ends at the middle node: the shape functions then give that linear field.
+TEST(L2Errors, Seg3WithMeanAtMiddleNodeIsLinear) {
+  Chain c = segChain([](double s) { return 1 + 3 * s; });
+  c.values[3] = 0.5 * (c.values[0] + c.values[1]);
+  c.values[4] = 0.5 * (c.values[1] + c.values[2]);
   const auto r = post::l2Norms(c.mesh, c.cells, all(c.values, 1),
-                               {[](double x, double y) { return 1 + 3 * arcLength(x, y); }},
-                               post::EdgeInterpolation::VertexLinear);
+                               {[](double x, double y) { return 1 + 3 * arcLength(x, y); }});
   EXPECT_NEAR(r.error, 0.0, 1e-13);
   EXPECT_NEAR(r.measure, 2.0, 1e-14);
   // int_0^2 (1+3s)^2 ds = [(1+3s)^3/9]_0^2 = (343 - 1)/9 = 38.
   EXPECT_NEAR(r.exact, std::sqrt(38.0), 1e-12);
 }
 
-TEST(L2Errors, Seg3VertexLinearAgainstQuadraticByHand) {
-  // Vertex data of s^2: 0, 1, 4; linear on each cell. Error^2 on each cell:
-  // int_0^1 (t - t^2)^2 dt = 1/30, twice: 1/15.
-  const Chain c = segChain([](double s) { return s * s; });
+TEST(L2Errors, Seg3LinearDataAgainstQuadraticByHand) {
+  // Vertex data of s^2: 0, 1, 4, means 0.5, 2.5 at the middle nodes: linear on
+  // each cell. Error^2 on each cell: int_0^1 (t - t^2)^2 dt = 1/30, twice: 1/15.
+  Chain c = segChain([](double s) { return s * s; });
+  c.values[3] = 0.5;
+  c.values[4] = 2.5;
   const auto r = post::l2Norms(c.mesh, c.cells, all(c.values, 1),
-                               {[](double x, double y) { return x * x + y * y; }},
-                               post::EdgeInterpolation::VertexLinear);
+                               {[](double x, double y) { return x * x + y * y; }});
   EXPECT_NEAR(r.error, std::sqrt(1.0 / 15.0), 1e-13);
   // int_0^2 s^4 = 32/5.
   EXPECT_NEAR(r.exact, std::sqrt(32.0 / 5.0), 1e-12);
