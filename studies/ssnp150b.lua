@@ -118,6 +118,13 @@ for i = 0, nbmesh - 1 do
                         CRITERE = 'ABSOLU', REFERENCE = 'SOURCE_EXTERNE', VALE_REFE = 3.5, PRECISION = 2.5,
                         LEGENDE = 'ITER<=6'}}
     end
+    -- The contact pressure matches the exact p = (Pi.N).n along BAS: relative
+    -- L2 error below 1E-4.
+    ERRP_RELA = POST_ERREUR{OPTION = 'LAGR_RELA', CHAM_GD = UCALC, MODELE = MO, GROUP_MA = 'BAS',
+                            LAGS_C = PRES_EX}
+    TEST_TABLE{TABLE = ERRP_RELA, NOM_PARA = 'ERREUR', FILTRE = {NOM_PARA = 'GROUP_MA', VALE_K = 'BAS'},
+               VALE_CALC = 5.31098862756E-05, REFERENCE = 'ANALYTIQUE', VALE_REFE = 0.0, CRITERE = 'ABSOLU',
+               PRECISION = 1.0E-4}
     -- Nodal difference, pressure along BAS, fields for viewing.
     local CHXN = CREA_CHAMP{TYPE_CHAM = 'NOEU_GEOM_R', OPERATION = 'EXTR', MAILLAGE = MA[i], NOM_CHAM = 'GEOMETRIE'}
     local UANA_F = CREA_CHAMP{TYPE_CHAM = 'NOEU_NEUT_F', OPERATION = 'AFFE', MAILLAGE = MA[i],
