@@ -83,4 +83,28 @@ void chooseBlasThreads(int unknowns) {
   set(unknowns < kSmallSystem ? 1 : all);
 }
 
+namespace {
+using GetDynamic = int (*)();
+using SetDynamic = void (*)(int);
+// Looked up at run time: CHOLMOD brings libgomp, and this library needs no OpenMP of its own.
+GetDynamic getDynamic() {
+  static const auto f = reinterpret_cast<GetDynamic>(dlsym(RTLD_DEFAULT, "omp_get_dynamic"));
+  return f;
+}
+SetDynamic setDynamic() {
+  static const auto f = reinterpret_cast<SetDynamic>(dlsym(RTLD_DEFAULT, "omp_set_dynamic"));
+  return f;
+}
+}  // namespace
+
+DynamicOpenMPThreads::DynamicOpenMPThreads() {
+  if (!getDynamic() || !setDynamic()) return;
+  previous_ = getDynamic()();
+  setDynamic()(1);
+}
+
+DynamicOpenMPThreads::~DynamicOpenMPThreads() {
+  if (previous_ >= 0) setDynamic()(previous_);
+}
+
 }  // namespace aster::solver

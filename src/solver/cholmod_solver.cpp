@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "solver/blas_info.hpp"
 #include "solver/pivot_audit.hpp"
 #include "solver/stopwatch.hpp"
 
@@ -161,7 +162,11 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
   cholmod_common& c = h_->common;
   cholmod_factor* L = h_->factor;
   const auto start = std::chrono::steady_clock::now();
-  const int ok = cholmod_factorize(&view, L, &c);
+  int ok = 0;
+  {
+    DynamicOpenMPThreads threads;
+    ok = cholmod_factorize(&view, L, &c);
+  }
   stats_.numericSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!ok || c.status < CHOLMOD_OK) throw Error(name() + ": numeric factorization failed: " + cholmodStatus(c.status));
   if (L->minor < L->n) {
