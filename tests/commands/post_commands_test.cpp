@@ -537,19 +537,23 @@ TEST_RESU{CHAM_ELEM={CHAM_GD=XG, GROUP_MA='BAS', POINT=4, NOM_CMP='X', VALE_CALC
   }
 }
 
-TEST(ElgaFields, ExtrOfSiefElgaFromAResult) {
-  // The unit square pulled by DY = 0.01 on HAUT, DX = DY = 0 on BAS, PETIT, E = 1,
-  // NU = 0: a uniform strain eps_yy = 0.01, hence SIYY = 0.01 and SIXX = SIZZ =
-  // SIXY = 0 at the 9 points of M6. EXTR gives that field (ELGA_SIEF_R) at the
-  // model's Gauss points: POST_ELEM integrates it (norm of SIYY = 0.01 over the
-  // unit area), ASSE combines it.
-  const auto r = run("extr", R"(
+// The unit square pulled by DY = 0.01 on HAUT, DX = DY = 0 on BAS, PETIT, E = 1, NU = 0: result R.
+const char* kPulledSquare = R"(
 MAT = DEFI_MATERIAU{ELAS={E=1.0, NU=0.0}}
 CM = AFFE_MATERIAU{MAILLAGE=MAIL, AFFE={TOUT='OUI', MATER=MAT}}
 BC = AFFE_CHAR_MECA{MODELE=MODE, DDL_IMPO={{GROUP_MA='BAS', DX=0.0, DY=0.0}, {GROUP_MA='HAUT', DY=0.01}}}
 L = DEFI_LIST_REEL{DEBUT=0.0, INTERVALLE={JUSQU_A=1.0, NOMBRE=1}}
 R = STAT_NON_LINE{MODELE=MODE, CHAM_MATER=CM, EXCIT={CHARGE=BC},
                   COMPORTEMENT={RELATION='ELAS', DEFORMATION='PETIT'}, INCREMENT={LIST_INST=L}}
+)";
+
+TEST(ElgaFields, ExtrOfSiefElgaFromAResult) {
+  // The unit square pulled by DY = 0.01 on HAUT, DX = DY = 0 on BAS, PETIT, E = 1,
+  // NU = 0: a uniform strain eps_yy = 0.01, hence SIYY = 0.01 and SIXX = SIZZ =
+  // SIXY = 0 at the 9 points of M6. EXTR gives that field (ELGA_SIEF_R) at the
+  // model's Gauss points: POST_ELEM integrates it (norm of SIYY = 0.01 over the
+  // unit area), ASSE combines it.
+  const auto r = run("extr", std::string(kPulledSquare) + R"(
 S = CREA_CHAMP{TYPE_CHAM='ELGA_SIEF_R', OPERATION='EXTR', RESULTAT=R, NOM_CHAM='SIEF_ELGA', INST=1.0}
 TEST_RESU{CHAM_ELEM={{CHAM_GD=S, GROUP_MA='SURFACE', POINT=7, NOM_CMP='SIYY', VALE_CALC=0.01, TOLE_MACHINE=1e-10},
                      {CHAM_GD=S, TYPE_TEST='SOMM', NOM_CMP='SIYY', VALE_CALC=0.09, TOLE_MACHINE=1e-10},
@@ -562,13 +566,7 @@ TEST_RESU{CHAM_ELEM={CHAM_GD=N2, TYPE_TEST='SOMM', VALE_CALC=9.0, TOLE_MACHINE=1
 )");
   EXPECT_EQ(r.status, 0) << r.err << r.out;
   EXPECT_EQ(r.ok, 5) << r.out;
-  const auto bad = run("extr_bad", R"(
-MAT = DEFI_MATERIAU{ELAS={E=1.0, NU=0.0}}
-CM = AFFE_MATERIAU{MAILLAGE=MAIL, AFFE={TOUT='OUI', MATER=MAT}}
-BC = AFFE_CHAR_MECA{MODELE=MODE, DDL_IMPO={{GROUP_MA='BAS', DX=0.0, DY=0.0}, {GROUP_MA='HAUT', DY=0.01}}}
-L = DEFI_LIST_REEL{DEBUT=0.0, INTERVALLE={JUSQU_A=1.0, NOMBRE=1}}
-R = STAT_NON_LINE{MODELE=MODE, CHAM_MATER=CM, EXCIT={CHARGE=BC},
-                  COMPORTEMENT={RELATION='ELAS', DEFORMATION='PETIT'}, INCREMENT={LIST_INST=L}}
+  const auto bad = run("extr_bad", std::string(kPulledSquare) + R"(
 S = CREA_CHAMP{TYPE_CHAM='ELGA_DEPL_R', OPERATION='EXTR', RESULTAT=R, NOM_CHAM='DEPL', INST=1.0}
 )");
   EXPECT_EQ(bad.status, 2);
