@@ -72,15 +72,34 @@ void selectBlasKernels(char** argv) {
 #endif
 }
 
+namespace {
+using GetThreads = int (*)();
+using SetThreads = void (*)(int);
+GetThreads getBlasThreads() {
+  static const auto f = reinterpret_cast<GetThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  return f;
+}
+SetThreads setBlasThreads() {
+  static const auto f = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  return f;
+}
+}  // namespace
+
 void chooseBlasThreads(int unknowns) {
   if (getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS")) return;
-  using GetFunction = int (*)();
-  using SetFunction = void (*)(int);
-  static const auto get = reinterpret_cast<GetFunction>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-  static const auto set = reinterpret_cast<SetFunction>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-  if (!get || !set) return;
-  static const int all = get();  // what OpenBLAS chose at start-up, before any change
-  set(unknowns < kSmallSystem ? 1 : all);
+  if (!getBlasThreads() || !setBlasThreads()) return;
+  static const int all = getBlasThreads()();  // what OpenBLAS chose at start-up, before any change
+  setBlasThreads()(unknowns < kSmallSystem ? 1 : all);
+}
+
+ScopedBlasThreads::ScopedBlasThreads(int threads) {
+  if (!getBlasThreads() || !setBlasThreads()) return;
+  previous_ = getBlasThreads()();
+  if (previous_ != threads) setBlasThreads()(threads);
+}
+
+ScopedBlasThreads::~ScopedBlasThreads() {
+  if (previous_ > 0 && previous_ != getBlasThreads()()) setBlasThreads()(previous_);
 }
 
 namespace {

@@ -33,6 +33,21 @@ void selectBlasKernels(char** argv);
 inline constexpr int kSmallSystem = 10000;
 void chooseBlasThreads(int unknowns);
 
+// While alive, OpenBLAS runs every call on the calling thread with `threads` threads
+// (openblas_set_num_threads; the previous count is restored after). The multifrontal
+// factorization runs independent subtrees on separate threads, each with a one-thread
+// BLAS. Nothing when the BLAS is not OpenBLAS.
+class ScopedBlasThreads {
+ public:
+  explicit ScopedBlasThreads(int threads);
+  ~ScopedBlasThreads();
+  ScopedBlasThreads(const ScopedBlasThreads&) = delete;
+  ScopedBlasThreads& operator=(const ScopedBlasThreads&) = delete;
+
+ private:
+  int previous_ = -1;  // openblas_get_num_threads() before, -1 without OpenBLAS
+};
+
 // While alive, OpenMP adjusts the number of threads of new parallel regions to
 // the cores free (omp_set_dynamic(1); the previous setting is restored after).
 // Debian's CHOLMOD (SuiteSparse 5.12) asks for 4 threads, whatever the machine,

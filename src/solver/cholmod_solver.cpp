@@ -6,6 +6,10 @@
 #include <sstream>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "solver/blas_info.hpp"
 #include "solver/pivot_audit.hpp"
 #include "solver/stopwatch.hpp"
@@ -90,6 +94,7 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   SparseMatrix storage;
   const SparseMatrix& M = compressedMatrix(A, storage);
   factorized_ = false;
+  multifrontal_.reset();
   if (h_->factor) cholmod_free_factor(&h_->factor, &h_->common);
   pattern_.record(M);
   cholmod_sparse view = lowerView(M);
@@ -147,8 +152,32 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
     case CHOLMOD_COLAMD: stats_.ordering = "COLAMD"; break;
     default: stats_.ordering = "other"; break;
   }
-  stats_.factorFlops = c.fl;  // predicted by the analysis; the factorization reports its own
+  stats_.factorFlops = c.fl;  // predicted by the analysis
   stats_.factorNonzeros = static_cast<long long>(c.lnz);
+  if (mode_ == Mode::Cholesky) planMultifrontal(M);
+}
+
+// Gives the supernodal symbolic factor its numeric storage and plans the multifrontal
+// factorization on CHOLMOD's structure.
+void CholmodSolver::planMultifrontal(const SparseMatrix& A) {
+  cholmod_factor* L = h_->factor;
+  cholmod_common& c = h_->common;
+  if (!L->is_super) throw Error(name() + ": the analysis did not produce a supernodal factor");
+  if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, &c) || !L->x)
+    throw Error(name() + ": cannot allocate the factor: " + cholmodStatus(c.status));
+  SupernodalStructure structure;
+  structure.n = static_cast<int>(L->n);
+  structure.supernodeCount = static_cast<int>(L->nsuper);
+  structure.firstColumn = static_cast<const int*>(L->super);
+  structure.rowStart = static_cast<const int*>(L->pi);
+  structure.valueStart = static_cast<const int*>(L->px);
+  structure.rows = static_cast<const int*>(L->s);
+  structure.permutation = static_cast<const int*>(L->Perm);
+  int threads = 1;
+#ifdef _OPENMP
+  threads = omp_get_max_threads();
+#endif
+  multifrontal_ = std::make_unique<MultifrontalCholesky>(structure, A, threads);
 }
 
 void CholmodSolver::factorize(const SparseMatrix& A) {
@@ -158,17 +187,19 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
   pattern_.requireSame(M, name());
   factorized_ = false;
   requireSymmetric(M, symmetryTolerance_, name());
-  cholmod_sparse view = lowerView(M);
   cholmod_common& c = h_->common;
   cholmod_factor* L = h_->factor;
   const auto start = std::chrono::steady_clock::now();
-  int ok = 0;
-  {
+  if (multifrontal_) {
+    const int failed = multifrontal_->factorize(M, static_cast<double*>(L->x));
+    L->minor = failed < 0 ? L->n : static_cast<size_t>(failed);
+  } else {
     DynamicOpenMPThreads threads;
-    ok = cholmod_factorize(&view, L, &c);
+    cholmod_sparse view = lowerView(M);
+    const int ok = cholmod_factorize(&view, L, &c);
+    if (!ok || c.status < CHOLMOD_OK) throw Error(name() + ": numeric factorization failed: " + cholmodStatus(c.status));
   }
   stats_.numericSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!ok || c.status < CHOLMOD_OK) throw Error(name() + ": numeric factorization failed: " + cholmodStatus(c.status));
   if (L->minor < L->n) {
     const int* perm = static_cast<const int*>(L->Perm);
     const int col = perm ? perm[L->minor] : static_cast<int>(L->minor);
@@ -182,8 +213,6 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
     }
     throwZeroPivot(name(), col, col);
   }
-  stats_.factorFlops = c.fl;
-  stats_.factorNonzeros = static_cast<long long>(c.lnz);
   auditFactor(M);
   factorized_ = true;
 }

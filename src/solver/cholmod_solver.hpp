@@ -1,6 +1,9 @@
 // CHOLMOD for symmetric matrices (only the upper triangle is read, after a symmetry check).
 // Mode::Cholesky: supernodal LL^T (BLAS/LAPACK on dense blocks), ordering chosen by CHOLMOD
-//   (AMD, or METIS when it predicts less fill); the matrix must be positive definite.
+//   (AMD, or nested dissection on large matrices); the matrix must be positive definite.
+//   CHOLMOD computes the ordering, the supernodes and the solves; the numeric factorization
+//   is aster-lite's multifrontal one (solver/multifrontal_cholesky.hpp), several times faster
+//   than CHOLMOD's left-looking one on 2D meshes.
 // Mode::LDLT: simplicial LDL^T without pivoting. Rows whose diagonal is absent or zero when
 //   analyze() runs (Lagrange multipliers) are ordered after all others (constrained AMD), so
 //   that a stiffness + constraints system [K B^T; B 0] with K positive definite and B of full
@@ -10,6 +13,7 @@
 #include <memory>
 
 #include "solver/linear_solver.hpp"
+#include "solver/multifrontal_cholesky.hpp"
 
 namespace aster::solver {
 
@@ -35,11 +39,13 @@ class CholmodSolver : public LinearSolver {
 
  private:
   struct Handles;  // cholmod.h's structures, kept out of this header
+  void planMultifrontal(const SparseMatrix& A);
   void auditFactor(const SparseMatrix& A) const;
   Mode mode_;
   double symmetryTolerance_ = 1e-10;
   bool factorized_ = false;
   std::unique_ptr<Handles> h_;
+  std::unique_ptr<MultifrontalCholesky> multifrontal_;  // Mode::Cholesky, once analysed
 };
 
 }  // namespace aster::solver

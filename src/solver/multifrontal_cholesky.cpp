@@ -1,0 +1,239 @@
+#include "solver/multifrontal_cholesky.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <numeric>
+
+#include "solver/blas_info.hpp"
+
+extern "C" {
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
+            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
+void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
+            const int* lda, const double* beta, double* c, const int* ldc);
+}
+
+namespace aster::solver {
+
+namespace {
+
+// Adds a child's update matrix (u x u, lower triangle) into its parent's front: the parent's
+// block of L (m x width) for the rows and columns of its own, its update matrix (the rest).
+// relative[i]: position of the child's update row i among the parent's rows (ascending).
+void extendAdd(const double* update, int u, const int* relative, double* block, int m, int width,
+               double* parentUpdate, int parentU) {
+  for (int j = 0; j < u; ++j) {
+    const double* column = update + static_cast<size_t>(j) * u;
+    const int target = relative[j];
+    double* destination = target < width ? block + static_cast<size_t>(target) * m
+                                         : parentUpdate + static_cast<size_t>(target - width) * parentU - width;
+    for (int i = j; i < u; ++i) destination[relative[i]] += column[i];
+  }
+}
+
+}  // namespace
+
+MultifrontalCholesky::MultifrontalCholesky(const SupernodalStructure& structure, const SparseMatrix& A,
+                                           int threads, double parallelFlops)
+    : structure_(structure) {
+  const SupernodalStructure& S = structure_;
+  const int n = S.n, ns = S.supernodeCount;
+  if (A.rows() != n || A.cols() != n || !A.isCompressed())
+    throw Error("multifrontal Cholesky: the matrix does not match the symbolic factorization");
+
+  std::vector<int> owner(n);
+  for (int s = 0; s < ns; ++s)
+    for (int k = S.firstColumn[s]; k < S.firstColumn[s + 1]; ++k) owner[k] = s;
+  parent_.assign(ns, -1);
+  childStart_.assign(ns + 1, 0);
+  flops_.resize(ns);
+  for (int s = 0; s < ns; ++s) {
+    const int width = S.firstColumn[s + 1] - S.firstColumn[s];
+    const int m = S.rowStart[s + 1] - S.rowStart[s];
+    if (m > width) {
+      parent_[s] = owner[S.rows[S.rowStart[s] + width]];
+      ++childStart_[parent_[s] + 1];
+    }
+    const double w = width, u = m - width;
+    flops_[s] = w * w * w / 3 + u * w * w + u * u * w + u * u;  // dpotrf, dtrsm, dsyrk, extend-add
+  }
+  totalFlops_ = std::accumulate(flops_.begin(), flops_.end(), 0.0);
+  std::partial_sum(childStart_.begin(), childStart_.end(), childStart_.begin());
+  children_.resize(childStart_[ns]);
+  {
+    std::vector<int> next(childStart_.begin(), childStart_.end() - 1);
+    for (int s = 0; s < ns; ++s)  // ascending: each front adds its children in a fixed order
+      if (parent_[s] >= 0) children_[next[parent_[s]]++] = s;
+  }
+
+  // Positions of each child's update rows among its parent's rows.
+  std::vector<int> position(n, -1);
+  relativeStart_.assign(ns + 1, 0);
+  for (int s = 0; s < ns; ++s) {
+    const int width = S.firstColumn[s + 1] - S.firstColumn[s];
+    relativeStart_[s + 1] = relativeStart_[s] + (S.rowStart[s + 1] - S.rowStart[s] - width);
+  }
+  relative_.resize(relativeStart_[ns]);
+  for (int p = 0; p < ns; ++p) {
+    for (int i = S.rowStart[p]; i < S.rowStart[p + 1]; ++i) position[S.rows[i]] = i - S.rowStart[p];
+    for (int e = childStart_[p]; e < childStart_[p + 1]; ++e) {
+      const int c = children_[e];
+      const int width = S.firstColumn[c + 1] - S.firstColumn[c];
+      long long out = relativeStart_[c];
+      for (int i = S.rowStart[c] + width; i < S.rowStart[c + 1]; ++i) {
+        const int at = position[S.rows[i]];
+        if (at < 0) throw Error("multifrontal Cholesky: a row of a supernode is missing from its parent");
+        relative_[out++] = at;
+      }
+    }
+    for (int i = S.rowStart[p]; i < S.rowStart[p + 1]; ++i) position[S.rows[i]] = -1;
+  }
+
+  // Where each entry of the lower triangle of P A P^T goes in L's storage.
+  std::vector<int> inverse(n);
+  for (int k = 0; k < n; ++k) inverse[S.permutation ? S.permutation[k] : k] = k;
+  entryStart_.assign(ns + 1, 0);
+  entrySource_.clear();
+  entryTarget_.clear();
+  entrySource_.reserve(A.nonZeros() / 2 + n);
+  entryTarget_.reserve(A.nonZeros() / 2 + n);
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  for (int s = 0; s < ns; ++s) {
+    const int k1 = S.firstColumn[s], m = S.rowStart[s + 1] - S.rowStart[s];
+    for (int i = S.rowStart[s]; i < S.rowStart[s + 1]; ++i) position[S.rows[i]] = i - S.rowStart[s];
+    for (int k = k1; k < S.firstColumn[s + 1]; ++k) {
+      const int j = S.permutation ? S.permutation[k] : k;
+      for (int p = outer[j]; p < outer[j + 1]; ++p) {
+        const int r = inverse[inner[p]];
+        if (r < k) continue;
+        if (position[r] < 0) throw Error("multifrontal Cholesky: an entry of the matrix is outside the factor's pattern");
+        entrySource_.push_back(p);
+        entryTarget_.push_back(position[r] + (k - k1) * m);
+      }
+    }
+    for (int i = S.rowStart[s]; i < S.rowStart[s + 1]; ++i) position[S.rows[i]] = -1;
+    entryStart_[s + 1] = static_cast<long long>(entrySource_.size());
+  }
+  schedule(threads, parallelFlops);
+}
+
+// Shares subtrees out between threads: the heaviest subtree is split (its root goes to the
+// top of the tree, its children become subtrees) until a longest-first assignment balances
+// the threads within 5 %, as the roots split into ever smaller subtrees.
+void MultifrontalCholesky::schedule(int threads, double parallelFlops) {
+  threadSupernodes_.clear();
+  topSupernodes_.clear();
+  const int ns = structure_.supernodeCount;
+  if (threads < 2 || totalFlops_ < parallelFlops) {
+    topSupernodes_.resize(ns);
+    std::iota(topSupernodes_.begin(), topSupernodes_.end(), 0);
+    return;
+  }
+  std::vector<double> subtree(flops_);
+  for (int s = 0; s < ns; ++s)
+    if (parent_[s] >= 0) subtree[parent_[s]] += subtree[s];
+  std::vector<int> candidates;
+  for (int s = 0; s < ns; ++s)
+    if (parent_[s] < 0) candidates.push_back(s);
+  std::vector<char> top(ns, 0);
+  std::vector<std::vector<int>> bins;
+  for (int split = 0; split < 4096 && !candidates.empty(); ++split) {
+    std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return subtree[a] > subtree[b]; });
+    std::vector<double> load(threads, 0.0);
+    bins.assign(threads, {});
+    for (int c : candidates) {
+      const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+      load[t] += subtree[c];
+      bins[t].push_back(c);
+    }
+    const double most = *std::max_element(load.begin(), load.end());
+    const double least = *std::min_element(load.begin(), load.end());
+    if (most - least <= 0.05 * most) break;
+    const int heaviest = candidates.front();
+    candidates.erase(candidates.begin());
+    top[heaviest] = 1;
+    for (int e = childStart_[heaviest]; e < childStart_[heaviest + 1]; ++e) candidates.push_back(children_[e]);
+    bins.clear();
+  }
+  if (bins.empty()) {  // never balanced: one thread
+    topSupernodes_.resize(ns);
+    std::iota(topSupernodes_.begin(), topSupernodes_.end(), 0);
+    return;
+  }
+  // Members of each subtree: a supernode belongs to the subtree of its first top-free ancestor chain.
+  std::vector<int> thread(ns, -1);
+  for (int t = 0; t < threads; ++t)
+    for (int root : bins[t]) thread[root] = t;
+  for (int s = ns - 1; s >= 0; --s)  // parents before children
+    if (!top[s] && thread[s] < 0 && parent_[s] >= 0) thread[s] = thread[parent_[s]];
+  threadSupernodes_.assign(threads, {});
+  for (int s = 0; s < ns; ++s) {
+    if (top[s])
+      topSupernodes_.push_back(s);
+    else
+      threadSupernodes_[thread[s]].push_back(s);
+  }
+}
+
+int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* values,
+                                             std::vector<std::vector<double>>& updates) const {
+  const SupernodalStructure& S = structure_;
+  const int k1 = S.firstColumn[s];
+  const int width = S.firstColumn[s + 1] - k1;
+  const int m = S.rowStart[s + 1] - S.rowStart[s];
+  const int u = m - width;
+  double* block = values + S.valueStart[s];
+  std::fill(block, block + static_cast<size_t>(m) * width, 0.0);
+  for (long long e = entryStart_[s]; e < entryStart_[s + 1]; ++e) block[entryTarget_[e]] = a[entrySource_[e]];
+  std::vector<double>& update = updates[s];
+  update.assign(static_cast<size_t>(u) * u, 0.0);
+  for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
+    const int c = children_[e];
+    const int cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);
+    extendAdd(updates[c].data(), cu, relative_.data() + relativeStart_[c], block, m, width, update.data(), u);
+    std::vector<double>().swap(updates[c]);
+  }
+  int info = 0;
+  dpotrf_("L", &width, block, &m, &info);
+  if (info != 0) return k1 + std::max(info, 1) - 1;
+  if (u > 0) {
+    const double one = 1.0, minusOne = -1.0;
+    dtrsm_("R", "L", "T", "N", &u, &width, &one, block, &m, block + width, &m);
+    dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &one, update.data(), &u);
+  }
+  return -1;
+}
+
+int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values) const {
+  std::vector<std::vector<double>> updates(structure_.supernodeCount);
+  const double* a = A.valuePtr();
+  int failed = INT_MAX;
+  if (!threadSupernodes_.empty()) {
+    // Each thread stops at its own first failure, so the column reported is the one a
+    // single thread would meet first, whatever the number of threads.
+    std::vector<int> failure(threadSupernodes_.size(), INT_MAX);
+    ScopedBlasThreads oneEach(1);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static, 1) num_threads(static_cast<int>(threadSupernodes_.size()))
+#endif
+    for (int t = 0; t < static_cast<int>(threadSupernodes_.size()); ++t)
+      for (int s : threadSupernodes_[t]) {
+        const int column = factorizeSupernode(s, a, values, updates);
+        if (column >= 0) {
+          failure[t] = column;
+          break;
+        }
+      }
+    failed = *std::min_element(failure.begin(), failure.end());
+  }
+  if (failed != INT_MAX) return failed;
+  for (int s : topSupernodes_) {
+    const int column = factorizeSupernode(s, a, values, updates);
+    if (column >= 0) return column;
+  }
+  return -1;
+}
+
+}  // namespace aster::solver

@@ -1,0 +1,74 @@
+// The numeric half of a supernodal Cholesky factorization A = L L^T, multifrontal.
+//
+// Each supernode (a run of columns of L with one row pattern) owns a dense frontal matrix
+// over its rows: it gathers its columns of A and the update matrices of its children in the
+// supernodal elimination tree, factorizes its own columns (dpotrf, dtrsm) straight into the
+// storage of L, and leaves its Schur complement (dsyrk) as its update matrix for its parent.
+// Every dense operation works on a whole front, so its inner dimension is the supernode's
+// width; a left-looking method (CHOLMOD's) updates a supernode once per descendant instead,
+// with that descendant's few columns as inner dimension, and ran at 11 % of dgemm's rate on
+// 2D meshes (docs/performance.md).
+//
+// Subtrees of the elimination tree are independent: they are shared out between threads,
+// each with a one-thread BLAS, and the top of the tree, whose fronts are large, runs after
+// them with every BLAS thread. Each front is computed the same way on any thread, in the
+// same order of its children, and a failure names the same column as on one thread.
+//
+// The symbolic structure (ordering, supernodes, row patterns, storage of L) is CHOLMOD's
+// supernodal analysis, so that cholmod_solve uses the factor as if CHOLMOD had computed it.
+#pragma once
+#include <vector>
+
+#include "solver/linear_solver.hpp"
+
+namespace aster::solver {
+
+// CHOLMOD's supernodal symbolic factor, field by field (cholmod_factor with int indices).
+struct SupernodalStructure {
+  int n = 0;
+  int supernodeCount = 0;
+  const int* firstColumn = nullptr;  // L->super, size supernodeCount + 1
+  const int* rowStart = nullptr;     // L->pi, size supernodeCount + 1, into rows
+  const int* valueStart = nullptr;   // L->px, size supernodeCount + 1, into the values of L
+  const int* rows = nullptr;         // L->s: rows of each supernode, its own columns first, ascending
+  const int* permutation = nullptr;  // L->Perm: row k of L is row permutation[k] of A (null: identity)
+};
+
+class MultifrontalCholesky {
+ public:
+  // Below this many estimated flops a factorization runs on one thread.
+  static constexpr double kParallelFlops = 2e7;
+
+  // Plans the factorization of matrices with A's pattern, both triangles stored (the same
+  // pattern the structure was computed from). threads: how many subtrees may run at once.
+  MultifrontalCholesky(const SupernodalStructure& structure, const SparseMatrix& A, int threads,
+                       double parallelFlops = kParallelFlops);
+
+  // L = chol(P A P^T) into values (the supernodal storage, column-major blocks at valueStart).
+  // Returns -1, or the first column of P A P^T whose pivot was not positive (L is then partial).
+  int factorize(const SparseMatrix& A, double* values) const;
+
+  // Subtrees the factorization runs concurrently (0: every supernode on the calling thread).
+  int concurrentSubtrees() const { return static_cast<int>(threadSupernodes_.size()); }
+  double estimatedFlops() const { return totalFlops_; }
+
+ private:
+  int factorizeSupernode(int s, const double* a, double* values, std::vector<std::vector<double>>& updates) const;
+  void schedule(int threads, double parallelFlops);
+
+  SupernodalStructure structure_;
+  std::vector<int> parent_;            // supernode of the parent, -1 at a root
+  std::vector<int> childStart_;        // children of s: children_[childStart_[s] .. childStart_[s + 1])
+  std::vector<int> children_;
+  std::vector<long long> relativeStart_;  // update rows of s as positions in its parent's rows
+  std::vector<int> relative_;
+  std::vector<long long> entryStart_;  // entries of A in supernode s: entryStart_[s] .. entryStart_[s + 1]
+  std::vector<int> entrySource_;       // index in A's values
+  std::vector<int> entryTarget_;       // offset in the supernode's block of L
+  std::vector<double> flops_;          // estimate per supernode
+  double totalFlops_ = 0;
+  std::vector<std::vector<int>> threadSupernodes_;  // per thread, in elimination order
+  std::vector<int> topSupernodes_;                 // after them, with every BLAS thread
+};
+
+}  // namespace aster::solver

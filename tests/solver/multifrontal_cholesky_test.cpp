@@ -1,0 +1,179 @@
+#include "solver/multifrontal_cholesky.hpp"
+
+#include <cholmod.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "test_matrices.hpp"
+
+namespace aster::solver {
+namespace {
+
+using namespace testing;
+
+// CHOLMOD's supernodal analysis of A (lower triangle read) and, as the reference,
+// CHOLMOD's own numeric factorization of it.
+class CholmodReference {
+ public:
+  CholmodReference(const SparseMatrix& A, int ordering) {
+    cholmod_start(&c_);
+    c_.print = 0;
+    c_.supernodal = CHOLMOD_SUPERNODAL;
+    c_.nmethods = 1;
+    c_.method[0].ordering = ordering;
+    cholmod_sparse view{};
+    view.nrow = view.ncol = static_cast<size_t>(A.rows());
+    view.nzmax = static_cast<size_t>(A.nonZeros());
+    view.p = const_cast<int*>(A.outerIndexPtr());
+    view.i = const_cast<int*>(A.innerIndexPtr());
+    view.x = const_cast<double*>(A.valuePtr());
+    view.stype = -1;
+    view.itype = CHOLMOD_INT;
+    view.xtype = CHOLMOD_REAL;
+    view.dtype = CHOLMOD_DOUBLE;
+    view.packed = 1;
+    L_ = cholmod_analyze(&view, &c_);
+    if (!L_) throw Error("analysis failed");
+    cholmod_factor* reference = cholmod_copy_factor(L_, &c_);
+    cholmod_factorize(&view, reference, &c_);
+    referenceMinor_ = reference->minor;
+    if (reference->is_super && reference->x) {
+      const double* x = static_cast<const double*>(reference->x);
+      referenceValues_.assign(x, x + reference->xsize);
+    }
+    cholmod_free_factor(&reference, &c_);
+    structure_.n = static_cast<int>(L_->n);
+    structure_.supernodeCount = static_cast<int>(L_->nsuper);
+    structure_.firstColumn = static_cast<const int*>(L_->super);
+    structure_.rowStart = static_cast<const int*>(L_->pi);
+    structure_.valueStart = static_cast<const int*>(L_->px);
+    structure_.rows = static_cast<const int*>(L_->s);
+    structure_.permutation = static_cast<const int*>(L_->Perm);
+  }
+  ~CholmodReference() {
+    cholmod_free_factor(&L_, &c_);
+    cholmod_finish(&c_);
+  }
+  CholmodReference(const CholmodReference&) = delete;
+  CholmodReference& operator=(const CholmodReference&) = delete;
+
+  const SupernodalStructure& structure() const { return structure_; }
+  const std::vector<double>& referenceValues() const { return referenceValues_; }
+  size_t referenceMinor() const { return referenceMinor_; }
+  size_t storage() const { return L_->xsize; }
+  int permutation(int k) const { return static_cast<const int*>(L_->Perm)[k]; }
+
+ private:
+  cholmod_common c_{};
+  cholmod_factor* L_ = nullptr;
+  SupernodalStructure structure_;
+  std::vector<double> referenceValues_;
+  size_t referenceMinor_ = 0;
+};
+
+// Largest difference between two factors, relative to the largest entry of the reference.
+double relativeDifference(const std::vector<double>& a, const std::vector<double>& reference) {
+  double difference = 0, largest = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    difference = std::max(difference, std::abs(a[i] - reference[i]));
+    largest = std::max(largest, std::abs(reference[i]));
+  }
+  return difference / largest;
+}
+
+// Two 2D Laplacians side by side, the second scaled: a forest of two elimination trees.
+SparseMatrix twoLaplacians(int m) {
+  Triplets t;
+  laplacian2d(m, t);
+  const int n = m * m;
+  for (const auto& e : Triplets(t)) t.emplace_back(e.row() + n, e.col() + n, 3.0 * e.value());
+  return fromTriplets(2 * n, t);
+}
+
+struct Case {
+  const char* name;
+  int ordering;
+  int threads;
+  int subtrees;  // on one Laplacian; the natural order of a band is a chain, with no independent subtrees
+};
+
+class AgainstCholmod : public ::testing::TestWithParam<Case> {};
+
+// The factor is CHOLMOD's own (same structure, same arithmetic up to rounding), on one
+// thread and with subtrees on 2 or 3 threads.
+TEST_P(AgainstCholmod, ComputesCholmodsFactor) {
+  const bool parallel = GetParam().threads > 1;
+  const struct {
+    SparseMatrix A;
+    int subtrees;
+  } problems[] = {{laplacian2d(50), GetParam().subtrees}, {twoLaplacians(30), parallel ? GetParam().threads : 0}};
+  for (const auto& [A, subtrees] : problems) {
+    CholmodReference reference(A, GetParam().ordering);
+    ASSERT_EQ(reference.referenceMinor(), static_cast<size_t>(A.rows()));
+    const MultifrontalCholesky plan(reference.structure(), A, GetParam().threads, 0.0);
+    EXPECT_EQ(plan.concurrentSubtrees(), subtrees) << A.rows();
+    std::vector<double> values(reference.storage(), -7.0);  // garbage the factorization must overwrite
+    EXPECT_EQ(plan.factorize(A, values.data()), -1);
+    EXPECT_LT(relativeDifference(values, reference.referenceValues()), 1e-13) << GetParam().name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Orderings, AgainstCholmod,
+                         ::testing::Values(Case{"AMD", CHOLMOD_AMD, 1, 0}, Case{"NESDIS", CHOLMOD_NESDIS, 1, 0},
+                                           Case{"NESDIS2", CHOLMOD_NESDIS, 2, 2}, Case{"AMD2", CHOLMOD_AMD, 2, 2},
+                                           Case{"NESDIS3", CHOLMOD_NESDIS, 3, 3},
+                                           Case{"NATURAL", CHOLMOD_NATURAL, 2, 0}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// New values on the same pattern: the plan is reused, the factor follows the values.
+TEST(MultifrontalCholesky, RefactorizesNewValues) {
+  SparseMatrix A = laplacian2d(40);
+  CholmodReference first(A, CHOLMOD_NESDIS);
+  const MultifrontalCholesky plan(first.structure(), A, 2, 0.0);
+  std::vector<double> values(first.storage());
+  ASSERT_EQ(plan.factorize(A, values.data()), -1);
+  for (int k = 0; k < A.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(A, k); it; ++it)
+      if (it.row() == it.col()) it.valueRef() += 0.5 + 0.01 * (k % 5);
+  ASSERT_EQ(plan.factorize(A, values.data()), -1);
+  CholmodReference second(A, CHOLMOD_NESDIS);  // same ordering: METIS is deterministic
+  EXPECT_LT(relativeDifference(values, second.referenceValues()), 1e-13);
+}
+
+// A negative pivot: the column reported is the one CHOLMOD reports, serial or in parallel.
+TEST(MultifrontalCholesky, ReportsTheColumnOfTheFirstNonPositivePivot) {
+  Triplets t;
+  laplacian2d(40, t);
+  const int bad = 777;
+  for (auto& e : t)
+    if (e.row() == bad && e.col() == bad) e = Eigen::Triplet<double>(bad, bad, 1.0);  // 1 < 2 + 2 neighbours: indefinite
+  const SparseMatrix A = fromTriplets(1600, t);
+  CholmodReference reference(A, CHOLMOD_NESDIS);
+  ASSERT_LT(reference.referenceMinor(), static_cast<size_t>(A.rows()));
+  for (int threads : {1, 2}) {
+    const MultifrontalCholesky plan(reference.structure(), A, threads, 0.0);
+    std::vector<double> values(reference.storage());
+    EXPECT_EQ(plan.factorize(A, values.data()), static_cast<int>(reference.referenceMinor())) << threads;
+  }
+}
+
+// Small problems stay on the calling thread.
+TEST(MultifrontalCholesky, SmallProblemsRunOnOneThread) {
+  const SparseMatrix A = laplacian2d(20);
+  CholmodReference reference(A, CHOLMOD_AMD);
+  const MultifrontalCholesky plan(reference.structure(), A, 2);
+  EXPECT_LT(plan.estimatedFlops(), MultifrontalCholesky::kParallelFlops);
+  EXPECT_EQ(plan.concurrentSubtrees(), 0);
+}
+
+TEST(MultifrontalCholesky, RefusesAMatrixOfAnotherSize) {
+  const SparseMatrix A = laplacian2d(10);
+  CholmodReference reference(A, CHOLMOD_AMD);
+  EXPECT_THROW(MultifrontalCholesky(reference.structure(), laplacian2d(11), 1), Error);
+}
+
+}  // namespace
+}  // namespace aster::solver
