@@ -97,6 +97,7 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   multifrontal_.reset();
   if (h_->factor) cholmod_free_factor(&h_->factor, &h_->common);
   pattern_.record(M);
+  symmetry_ = std::make_unique<SymmetryCheck>(M);
   cholmod_sparse view = lowerView(M);
   cholmod_common& c = h_->common;
   int constrained = 0;
@@ -186,7 +187,7 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
   const SparseMatrix& M = compressedMatrix(A, storage);
   pattern_.requireSame(M, name());
   factorized_ = false;
-  requireSymmetric(M, symmetryTolerance_, name());
+  symmetry_->require(M, symmetryTolerance_, name());
   cholmod_common& c = h_->common;
   cholmod_factor* L = h_->factor;
   const auto start = std::chrono::steady_clock::now();
@@ -242,7 +243,7 @@ void CholmodSolver::auditFactor(const SparseMatrix& A) const {
   auditPivots(name(), static_cast<int>(L->n), nprec_, [&](int k) {
     const int i = perm ? perm[k] : k;
     const double d = ll ? diagonal[k] * diagonal[k] : diagonal[k];
-    return Pivot{d, entryOf(A, i, i), i, i};
+    return Pivot{d, symmetry_->diagonal(A, i), i, i};
   });
 }
 

@@ -45,6 +45,7 @@ class CholmodSolver : public LinearSolver {
   double symmetryTolerance_ = 1e-10;
   bool factorized_ = false;
   std::unique_ptr<Handles> h_;
+  std::unique_ptr<SymmetryCheck> symmetry_;              // once analysed
   std::unique_ptr<MultifrontalCholesky> multifrontal_;  // Mode::Cholesky, once analysed
 };
 

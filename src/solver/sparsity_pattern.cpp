@@ -114,6 +114,53 @@ void requireSymmetric(const Matrix& A, double relTol, const std::string& method)
     for (int c = cursor[i]; c < p[i + 1] && r[c] < i; ++c) check(r[c], i, v[c], 0.0);
 }
 
+SymmetryCheck::SymmetryCheck(const Matrix& A) {
+  sorted_ = A.isCompressed() && rowsSorted(A);
+  if (!sorted_) return;
+  const int n = static_cast<int>(A.cols());
+  const int* p = A.outerIndexPtr();
+  const int* r = A.innerIndexPtr();
+  diagonal_.assign(n, -1);
+  std::vector<int> cursor(p, p + n);
+  for (int j = 0; j < n; ++j)
+    for (int k = p[j]; k < p[j + 1]; ++k) {
+      const int i = r[k];
+      if (i == j) diagonal_[j] = k;
+      if (i <= j) continue;
+      int& c = cursor[i];
+      for (; c < p[i + 1] && r[c] < j; ++c) alone_.push_back(c);  // upper entries without a mirror
+      if (c < p[i + 1] && r[c] == j)
+        mirrors_.emplace_back(k, c++);
+      else
+        alone_.push_back(k);
+    }
+  for (int i = 0; i < n; ++i)
+    for (int c = cursor[i]; c < p[i + 1] && r[c] < i; ++c) alone_.push_back(c);
+}
+
+void SymmetryCheck::require(const Matrix& A, double relTol, const std::string& method) const {
+  if (!sorted_) {
+    requireSymmetric(A, relTol, method);
+    return;
+  }
+  const int* r = A.innerIndexPtr();
+  const double* v = A.valuePtr();
+  auto scale = [&](int i, int j) { return std::sqrt(std::abs(diagonal(A, i)) * std::abs(diagonal(A, j))); };
+  auto columnOf = [&](int k) {
+    return static_cast<int>(std::upper_bound(A.outerIndexPtr(), A.outerIndexPtr() + A.cols() + 1, k) -
+                            A.outerIndexPtr()) - 1;
+  };
+  for (const auto& [k, c] : mirrors_) {
+    const double a = v[k], b = v[c];
+    const int i = r[k], j = r[c];
+    if (std::abs(a - b) > relTol * (std::abs(a) + std::abs(b) + scale(i, j))) throwUnsymmetric(A, i, j, method);
+  }
+  for (int k : alone_) {
+    const int i = r[k], j = columnOf(k);
+    if (std::abs(v[k]) > relTol * (std::abs(v[k]) + scale(i, j))) throwUnsymmetric(A, i, j, method);
+  }
+}
+
 double entryOf(const Matrix& A, int row, int col) {
   for (Matrix::InnerIterator it(A, col); it; ++it)
     if (it.index() == row) return it.value();
