@@ -2,6 +2,7 @@
 
 #include <cholmod.h>
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 #include <vector>
@@ -74,6 +75,57 @@ std::vector<int> constraintSets(const SparseMatrix& A, int& count) {
   return set;
 }
 
+// Nested dissection of the graph of the nodes rather than of the unknowns: consecutive
+// columns with the same pattern (a node's DX and DY) are one vertex, so METIS partitions a
+// graph with half the vertices and a quarter of the edges (SVK square N = 256: analysis
+// 2.5 -> 2.1 s, 2 % fewer flops per factorization; N = 128: 0.49 -> 0.38 s, 1.6 % more).
+// Returns the permutation of the columns, or nothing when the columns do not pair up or
+// CHOLMOD has no METIS.
+std::vector<int> nodeNestedDissection(const SparseMatrix& M, cholmod_common& c) {
+  const int n = static_cast<int>(M.cols());
+  const int* outer = M.outerIndexPtr();
+  const int* inner = M.innerIndexPtr();
+  std::vector<int> group(n), first{0};
+  for (int j = 1; j < n; ++j) {
+    const bool same = outer[j + 1] - outer[j] == outer[j] - outer[j - 1] &&
+                      std::equal(inner + outer[j], inner + outer[j + 1], inner + outer[j - 1]);
+    if (!same) first.push_back(j);
+    group[j] = static_cast<int>(first.size()) - 1;
+  }
+  const int groups = static_cast<int>(first.size());
+  first.push_back(n);
+  if (3 * groups > 2 * n) return {};
+  std::vector<int> p{0}, i, seen(groups, -1);
+  for (int g = 0; g < groups; ++g) {
+    const int j = first[g];
+    for (int k = outer[j]; k < outer[j + 1]; ++k) {
+      const int r = group[inner[k]];
+      if (seen[r] == g) continue;
+      seen[r] = g;
+      i.push_back(r);
+    }
+    p.push_back(static_cast<int>(i.size()));
+  }
+  cholmod_sparse graph{};
+  graph.nrow = graph.ncol = static_cast<size_t>(groups);
+  graph.nzmax = i.size();
+  graph.p = p.data();
+  graph.i = i.data();
+  graph.stype = -1;
+  graph.itype = CHOLMOD_INT;
+  graph.xtype = CHOLMOD_PATTERN;
+  graph.dtype = CHOLMOD_DOUBLE;
+  graph.sorted = 0;
+  graph.packed = 1;
+  std::vector<int> order(groups), parent(groups), member(groups);
+  if (cholmod_nested_dissection(&graph, nullptr, 0, order.data(), parent.data(), member.data(), &c) < 0) return {};
+  std::vector<int> perm;
+  perm.reserve(n);
+  for (int g : order)
+    for (int j = first[g]; j < first[g + 1]; ++j) perm.push_back(j);
+  return perm;
+}
+
 }  // namespace
 
 CholmodSolver::CholmodSolver(Mode mode) : mode_(mode), h_(std::make_unique<Handles>()) {
@@ -123,6 +175,7 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
     const int savedMethods = c.nmethods;
     const int savedOrdering = c.method[0].ordering;
     const int savedPostorder = c.postorder;
+    std::vector<int> nodeOrder;
     if (ordering_ != "AUTO") {  // RENUM given: that ordering and no other
       c.nmethods = 1;
       c.method[0].ordering = ordering_ == "AMD" ? CHOLMOD_AMD : ordering_ == "METIS" ? CHOLMOD_METIS : CHOLMOD_NATURAL;
@@ -130,8 +183,10 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
     } else if (M.rows() >= kNestedDissectionSize) {
       c.nmethods = 1;
       c.method[0].ordering = CHOLMOD_NESDIS;
+      nodeOrder = nodeNestedDissection(M, c);
+      if (!nodeOrder.empty()) c.method[0].ordering = CHOLMOD_GIVEN;
     }
-    h_->factor = cholmod_analyze(&view, &c);
+    h_->factor = nodeOrder.empty() ? cholmod_analyze(&view, &c) : cholmod_analyze_p(&view, nodeOrder.data(), nullptr, 0, &c);
     if (!h_->factor && c.status == CHOLMOD_NOT_INSTALLED) {  // CHOLMOD built without METIS
       c.nmethods = savedMethods;
       c.method[0].ordering = savedOrdering;
@@ -146,7 +201,7 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   if (!h_->factor) throw Error(name() + ": symbolic analysis failed: " + cholmodStatus(c.status));
   switch (h_->factor->ordering) {
     case CHOLMOD_NATURAL: stats_.ordering = "natural"; break;
-    case CHOLMOD_GIVEN: stats_.ordering = "CAMD (multipliers last)"; break;
+    case CHOLMOD_GIVEN: stats_.ordering = constrained > 0 ? "CAMD (multipliers last)" : "NESDIS (nodes)"; break;
     case CHOLMOD_AMD: stats_.ordering = "AMD"; break;
     case CHOLMOD_METIS: stats_.ordering = "METIS"; break;
     case CHOLMOD_NESDIS: stats_.ordering = "NESDIS"; break;

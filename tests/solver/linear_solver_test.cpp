@@ -211,6 +211,21 @@ TEST(Cholmod, RefusesIndefiniteMatrixNamingTheColumn) {
   }
 }
 
+// Two unknowns per node, as a plane mechanics stiffness (the Laplacian, Kronecker the SPD
+// block [2 1; 1 2]): the nested dissection orders the graph of the nodes.
+TEST(Cholmod, LargeMatricesAreOrderedByNodes) {
+  Triplets laplacian, t;
+  laplacian2d(110, laplacian);
+  const double block[2][2] = {{2.0, 1.0}, {1.0, 2.0}};
+  for (const auto& e : laplacian)
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) t.emplace_back(2 * e.row() + a, 2 * e.col() + b, e.value() * block[a][b]);
+  const SparseMatrix A = fromTriplets(2 * 110 * 110, t);
+  auto solver = makeLinearSolver("CHOLMOD");
+  expectSolves(*solver, A);
+  EXPECT_EQ(solver->statistics().ordering, "NESDIS (nodes)");
+}
+
 TEST(Cholmod, RefusesSaddlePointButLdltSolvesIt) {
   const SparseMatrix A = saddlePoint(10, 5);
   auto cholesky = makeLinearSolver("CHOLMOD");
