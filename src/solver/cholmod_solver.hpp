@@ -46,7 +46,8 @@ class CholmodSolver : public LinearSolver {
   bool factorized_ = false;
   std::unique_ptr<Handles> h_;
   std::unique_ptr<SymmetryCheck> symmetry_;              // once analysed
-  std::unique_ptr<MultifrontalCholesky> multifrontal_;  // Mode::Cholesky, once analysed
+  std::unique_ptr<MultifrontalCholesky> multifrontal_;
+  std::vector<double> pivots_;  // L(k,k) from the multifrontal factorization  // Mode::Cholesky, once analysed
 };
 
 }  // namespace aster::solver

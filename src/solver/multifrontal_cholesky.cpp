@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <memory>
 #include <numeric>
 
 #include "solver/blas_info.hpp"
@@ -18,16 +19,28 @@ namespace aster::solver {
 
 namespace {
 
-// Adds a child's update matrix (u x u, lower triangle) into its parent's front: the parent's
-// block of L (m x width) for the rows and columns of its own, its update matrix (the rest).
-// relative[i]: position of the child's update row i among the parent's rows (ascending).
-void extendAdd(const double* update, int u, const int* relative, double* block, int m, int width,
-               double* parentUpdate, int parentU) {
-  for (int j = 0; j < u; ++j) {
+// A child's update matrix (u x u, lower triangle) is added into its parent's front in two
+// parts: the columns that fall on the parent's own columns go into its block of L (m x width)
+// before the parent is factorized; the others go into the parent's update matrix after the
+// parent's dsyrk has written it. relative[i]: position of the child's update row i among the
+// parent's rows (ascending), so the first part is the columns j < split.
+int blockColumns(const int* relative, int u, int width) {
+  return static_cast<int>(std::lower_bound(relative, relative + u, width) - relative);
+}
+
+void addIntoBlock(const double* update, int u, const int* relative, int split, double* block, int m) {
+  for (int j = 0; j < split; ++j) {
     const double* column = update + static_cast<size_t>(j) * u;
-    const int target = relative[j];
-    double* destination = target < width ? block + static_cast<size_t>(target) * m
-                                         : parentUpdate + static_cast<size_t>(target - width) * parentU - width;
+    double* destination = block + static_cast<size_t>(relative[j]) * m;
+    for (int i = j; i < u; ++i) destination[relative[i]] += column[i];
+  }
+}
+
+void addIntoUpdate(const double* update, int u, const int* relative, int split, int width, double* parentUpdate,
+                   int parentU) {
+  for (int j = split; j < u; ++j) {
+    const double* column = update + static_cast<size_t>(j) * u;
+    double* destination = parentUpdate + static_cast<size_t>(relative[j] - width) * parentU - width;
     for (int i = j; i < u; ++i) destination[relative[i]] += column[i];
   }
 }
@@ -177,8 +190,8 @@ void MultifrontalCholesky::schedule(int threads, double parallelFlops) {
   }
 }
 
-int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* values,
-                                             std::vector<std::vector<double>>& updates) const {
+int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* values, double* pivots,
+                                             Updates& updates) const {
   const SupernodalStructure& S = structure_;
   const int k1 = S.firstColumn[s];
   const int width = S.firstColumn[s + 1] - k1;
@@ -187,27 +200,41 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
   double* block = values + S.valueStart[s];
   std::fill(block, block + static_cast<size_t>(m) * width, 0.0);
   for (long long e = entryStart_[s]; e < entryStart_[s + 1]; ++e) block[entryTarget_[e]] = a[entrySource_[e]];
-  std::vector<double>& update = updates[s];
-  update.assign(static_cast<size_t>(u) * u, 0.0);
-  for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
+  auto childUpdate = [&](int e, int& cu, const int*& relative) {
     const int c = children_[e];
-    const int cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);
-    extendAdd(updates[c].data(), cu, relative_.data() + relativeStart_[c], block, m, width, update.data(), u);
-    std::vector<double>().swap(updates[c]);
+    cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);
+    relative = relative_.data() + relativeStart_[c];
+    return updates[c].get();
+  };
+  for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
+    int cu = 0;
+    const int* relative = nullptr;
+    const double* update = childUpdate(e, cu, relative);
+    addIntoBlock(update, cu, relative, blockColumns(relative, cu, width), block, m);
   }
   int info = 0;
   dpotrf_("L", &width, block, &m, &info);
   if (info != 0) return k1 + std::max(info, 1) - 1;
+  if (pivots)
+    for (int k = 0; k < width; ++k) pivots[k1 + k] = block[k + static_cast<size_t>(k) * m];
   if (u > 0) {
-    const double one = 1.0, minusOne = -1.0;
+    const double one = 1.0, minusOne = -1.0, zero = 0.0;
+    updates[s].reset(new double[static_cast<size_t>(u) * u]);  // written whole by dsyrk
     dtrsm_("R", "L", "T", "N", &u, &width, &one, block, &m, block + width, &m);
-    dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &one, update.data(), &u);
+    dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &zero, updates[s].get(), &u);
+  }
+  for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
+    int cu = 0;
+    const int* relative = nullptr;
+    const double* update = childUpdate(e, cu, relative);
+    addIntoUpdate(update, cu, relative, blockColumns(relative, cu, width), width, updates[s].get(), u);
+    updates[children_[e]].reset();
   }
   return -1;
 }
 
-int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values) const {
-  std::vector<std::vector<double>> updates(structure_.supernodeCount);
+int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, double* pivots) const {
+  Updates updates(structure_.supernodeCount);
   const double* a = A.valuePtr();
   int failed = INT_MAX;
   if (!threadSupernodes_.empty()) {
@@ -220,7 +247,7 @@ int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values) const
 #endif
     for (int t = 0; t < static_cast<int>(threadSupernodes_.size()); ++t)
       for (int s : threadSupernodes_[t]) {
-        const int column = factorizeSupernode(s, a, values, updates);
+        const int column = factorizeSupernode(s, a, values, pivots, updates);
         if (column >= 0) {
           failure[t] = column;
           break;
@@ -230,7 +257,7 @@ int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values) const
   }
   if (failed != INT_MAX) return failed;
   for (int s : topSupernodes_) {
-    const int column = factorizeSupernode(s, a, values, updates);
+    const int column = factorizeSupernode(s, a, values, pivots, updates);
     if (column >= 0) return column;
   }
   return -1;

@@ -17,6 +17,7 @@
 // The symbolic structure (ordering, supernodes, row patterns, storage of L) is CHOLMOD's
 // supernodal analysis, so that cholmod_solve uses the factor as if CHOLMOD had computed it.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "solver/linear_solver.hpp"
@@ -44,16 +45,18 @@ class MultifrontalCholesky {
   MultifrontalCholesky(const SupernodalStructure& structure, const SparseMatrix& A, int threads,
                        double parallelFlops = kParallelFlops);
 
-  // L = chol(P A P^T) into values (the supernodal storage, column-major blocks at valueStart).
-  // Returns -1, or the first column of P A P^T whose pivot was not positive (L is then partial).
-  int factorize(const SparseMatrix& A, double* values) const;
+  // L = chol(P A P^T) into values (the supernodal storage, column-major blocks at valueStart),
+  // and L(k,k) into pivots[k] (size n) when given. Returns -1, or the first column of
+  // P A P^T whose pivot was not positive (L is then partial).
+  int factorize(const SparseMatrix& A, double* values, double* pivots = nullptr) const;
 
   // Subtrees the factorization runs concurrently (0: every supernode on the calling thread).
   int concurrentSubtrees() const { return static_cast<int>(threadSupernodes_.size()); }
   double estimatedFlops() const { return totalFlops_; }
 
  private:
-  int factorizeSupernode(int s, const double* a, double* values, std::vector<std::vector<double>>& updates) const;
+  using Updates = std::vector<std::unique_ptr<double[]>>;  // per supernode, until its parent adds it
+  int factorizeSupernode(int s, const double* a, double* values, double* pivots, Updates& updates) const;
   void schedule(int threads, double parallelFlops);
 
   SupernodalStructure structure_;

@@ -145,19 +145,28 @@ void SymmetryCheck::require(const Matrix& A, double relTol, const std::string& m
   }
   const int* r = A.innerIndexPtr();
   const double* v = A.valuePtr();
-  auto scale = [&](int i, int j) { return std::sqrt(std::abs(diagonal(A, i)) * std::abs(diagonal(A, j))); };
-  auto columnOf = [&](int k) {
-    return static_cast<int>(std::upper_bound(A.outerIndexPtr(), A.outerIndexPtr() + A.cols() + 1, k) -
-                            A.outerIndexPtr()) - 1;
-  };
-  for (const auto& [k, c] : mirrors_) {
+  const int n = static_cast<int>(A.cols());
+  std::vector<double> d(n);
+  for (int j = 0; j < n; ++j) d[j] = std::abs(diagonal(A, j));
+  auto pairFails = [&](std::size_t e) {
+    const auto [k, c] = mirrors_[e];
     const double a = v[k], b = v[c];
-    const int i = r[k], j = r[c];
-    if (std::abs(a - b) > relTol * (std::abs(a) + std::abs(b) + scale(i, j))) throwUnsymmetric(A, i, j, method);
-  }
+    return std::abs(a - b) > relTol * (std::abs(a) + std::abs(b) + std::sqrt(d[r[k]] * d[r[c]]));
+  };
+  // Both cores look for a failure; the first one, in a fixed order, is then named.
+  const long long pairs = static_cast<long long>(mirrors_.size());
+  bool failed = false;
+#pragma omp parallel for reduction(|| : failed) schedule(static) if (pairs > 100000)
+  for (long long e = 0; e < pairs; ++e) failed = failed || pairFails(static_cast<std::size_t>(e));
+  if (failed)
+    for (std::size_t e = 0; e < mirrors_.size(); ++e)
+      if (pairFails(e)) throwUnsymmetric(A, r[mirrors_[e].first], r[mirrors_[e].second], method);
+  auto columnOf = [&](int k) {
+    return static_cast<int>(std::upper_bound(A.outerIndexPtr(), A.outerIndexPtr() + n + 1, k) - A.outerIndexPtr()) - 1;
+  };
   for (int k : alone_) {
     const int i = r[k], j = columnOf(k);
-    if (std::abs(v[k]) > relTol * (std::abs(v[k]) + scale(i, j))) throwUnsymmetric(A, i, j, method);
+    if (std::abs(v[k]) > relTol * (std::abs(v[k]) + std::sqrt(d[i] * d[j]))) throwUnsymmetric(A, i, j, method);
   }
 }
 

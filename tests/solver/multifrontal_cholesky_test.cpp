@@ -116,8 +116,17 @@ TEST_P(AgainstCholmod, ComputesCholmodsFactor) {
     const MultifrontalCholesky plan(reference.structure(), A, GetParam().threads, 0.0);
     EXPECT_EQ(plan.concurrentSubtrees(), subtrees) << A.rows();
     std::vector<double> values(reference.storage(), -7.0);  // garbage the factorization must overwrite
-    EXPECT_EQ(plan.factorize(A, values.data()), -1);
+    std::vector<double> pivots(A.rows());
+    EXPECT_EQ(plan.factorize(A, values.data(), pivots.data()), -1);
     EXPECT_LT(relativeDifference(values, reference.referenceValues()), 1e-13) << GetParam().name;
+    const SupernodalStructure& S = reference.structure();
+    for (int s = 0; s < S.supernodeCount; ++s) {
+      const int m = S.rowStart[s + 1] - S.rowStart[s];
+      for (int k = S.firstColumn[s]; k < S.firstColumn[s + 1]; ++k) {
+        const int local = k - S.firstColumn[s];
+        EXPECT_EQ(pivots[k], values[S.valueStart[s] + local * (m + 1)]);
+      }
+    }
   }
 }
 
