@@ -37,35 +37,40 @@ AssemblyPattern::AssemblyPattern(int dofCount, const ElementDofs& elements)
   positionOffsets_.resize(ne + 1, 0);
   for (int e = 0; e < ne; ++e)
     positionOffsets_[e + 1] = positionOffsets_[e] + static_cast<std::int64_t>(elements.size(e)) * elements.size(e);
-  positions_.assign(positionOffsets_[ne], -1);
+  positions_.resize(positionOffsets_[ne]);
 
-  // Column by column: the distinct rows (marker array), sorted, then each
-  // touching element's column entries point at their row's position.
-  std::vector<int> outer(dofCount + 1, 0);
-  std::vector<int> inner;
-  inner.reserve(static_cast<std::size_t>(start[dofCount]) * 4);
-  std::vector<int> mark(dofCount, -1), positionOfRow(dofCount, -1);
-  std::vector<int> rows;
-  for (int j = 0; j < dofCount; ++j) {
-    rows.clear();
+  // Two passes over the columns: the number of distinct rows of each (marker array), then,
+  // in the matrix allocated at its final size, the sorted rows, to which each touching
+  // element's column entries point.
+  std::vector<int> mark(dofCount, -1);
+  auto distinctRows = [&](int j, auto&& onRow) {
     for (int t = start[j]; t < start[j + 1]; ++t) {
-      const int e = touchElement[t];
-      const int* d = elements.dofs(e);
-      for (int i = 0; i < elements.size(e); ++i)
+      const int* d = elements.dofs(touchElement[t]);
+      for (int i = 0; i < elements.size(touchElement[t]); ++i)
         if (d[i] >= 0 && mark[d[i]] != j) {
           mark[d[i]] = j;
-          rows.push_back(d[i]);
+          onRow(d[i]);
         }
     }
-    std::sort(rows.begin(), rows.end());
-    const std::int64_t base = static_cast<std::int64_t>(inner.size());
-    if (base + static_cast<std::int64_t>(rows.size()) > 2147483647LL)
-      throw Error("AssemblyPattern: more than 2^31 non-zeros");
-    for (std::size_t k = 0; k < rows.size(); ++k) {
-      positionOfRow[rows[k]] = static_cast<int>(base + static_cast<std::int64_t>(k));
-      inner.push_back(rows[k]);
-    }
-    outer[j + 1] = static_cast<int>(inner.size());
+  };
+  std::vector<std::int64_t> count(dofCount + 1, 0);
+  for (int j = 0; j < dofCount; ++j) distinctRows(j, [&](int) { ++count[j + 1]; });
+  for (int j = 0; j < dofCount; ++j) count[j + 1] += count[j];
+  if (count[dofCount] > 2147483647LL) throw Error("AssemblyPattern: more than 2^31 non-zeros");
+  nonZeros_ = count[dofCount];
+  pattern_.resize(dofCount, dofCount);
+  pattern_.resizeNonZeros(static_cast<Eigen::Index>(nonZeros_));
+  int* outer = pattern_.outerIndexPtr();
+  int* inner = pattern_.innerIndexPtr();
+  for (int j = 0; j <= dofCount; ++j) outer[j] = static_cast<int>(count[j]);
+  std::fill(mark.begin(), mark.end(), -1);
+  std::vector<int> positionOfRow(dofCount, -1);
+  for (int j = 0; j < dofCount; ++j) {
+    int* rows = inner + outer[j];
+    int k = 0;
+    distinctRows(j, [&](int row) { rows[k++] = row; });
+    std::sort(rows, rows + k);
+    for (int r = 0; r < k; ++r) positionOfRow[rows[r]] = outer[j] + r;
     for (int t = start[j]; t < start[j + 1]; ++t) {
       const int e = touchElement[t], lj = touchLocal[t], n = elements.size(e);
       const int* d = elements.dofs(e);
@@ -73,12 +78,26 @@ AssemblyPattern::AssemblyPattern(int dofCount, const ElementDofs& elements)
       for (int i = 0; i < n; ++i) pos[i] = d[i] >= 0 ? positionOfRow[d[i]] : -1;
     }
   }
+  // Columns of negative DOFs are never reached: their entries stay unassembled.
+  for (int e = 0; e < ne; ++e) {
+    const int n = elements.size(e);
+    const int* d = elements.dofs(e);
+    for (int lj = 0; lj < n; ++lj)
+      if (d[lj] < 0) std::fill_n(positions_.data() + positionOffsets_[e] + static_cast<std::int64_t>(lj) * n, n, -1);
+  }
+  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + nonZeros_, 0.0);
+}
 
-  pattern_.resize(dofCount, dofCount);
-  pattern_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
-  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
-  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + inner.size(), 0.0);
+SparseMatrix AssemblyPattern::newMatrix() const {
+  if (taken_) throw Error("AssemblyPattern: newMatrix() after takeMatrix()");
+  return pattern_;
+}
+
+void AssemblyPattern::takeMatrix(SparseMatrix& A) {
+  if (taken_) throw Error("AssemblyPattern: takeMatrix() called twice");
+  taken_ = true;
+  A.swap(pattern_);
+  pattern_ = SparseMatrix();
 }
 
 void AssemblyPattern::checkSize(int e, int rows, int cols, const SparseMatrix& A) const {
@@ -88,7 +107,7 @@ void AssemblyPattern::checkSize(int e, int rows, int cols, const SparseMatrix& A
   if (rows != n || cols != n)
     throw Error("AssemblyPattern: element " + std::to_string(e) + " has " + std::to_string(n) +
                 " DOFs but its matrix is " + std::to_string(rows) + "x" + std::to_string(cols));
-  if (A.rows() != dofCount_ || A.nonZeros() != pattern_.nonZeros() || !A.isCompressed())
+  if (A.rows() != dofCount_ || A.nonZeros() != nonZeros_ || !A.isCompressed())
     throw Error("AssemblyPattern: the target matrix was not created by this pattern's newMatrix()");
 }
 

@@ -23,12 +23,17 @@ class AssemblyPattern {
   AssemblyPattern(int dofCount, const ElementDofs& elements);
 
   int dofCount() const { return dofCount_; }
-  long long nonZeros() const { return static_cast<long long>(pattern_.nonZeros()); }
+  long long nonZeros() const { return nonZeros_; }
   int elementCount() const { return elements_.elementCount(); }
   const ElementDofs& elements() const { return elements_; }
 
   // A matrix with the pattern and all values zero.
-  SparseMatrix newMatrix() const { return pattern_; }
+  SparseMatrix newMatrix() const;
+  // Hands the pattern's own matrix (values zero) over to A, swapped, not copied (Eigen 3.4's
+  // sparse matrices have no move): a large model's matrix is hundreds of MB, and memory
+  // touched for the first time is slow to get (page faults). newMatrix() and takeMatrix()
+  // cannot be called after.
+  void takeMatrix(SparseMatrix& A);
   // Sets all values of a matrix from newMatrix() to zero, keeping the pattern.
   static void clear(SparseMatrix& A) { std::fill(A.valuePtr(), A.valuePtr() + A.nonZeros(), 0.0); }
 
@@ -75,6 +80,8 @@ class AssemblyPattern {
   int dofCount_ = 0;
   ElementDofs elements_;
   SparseMatrix pattern_;
+  bool taken_ = false;
+  long long nonZeros_ = 0;
   std::vector<std::int64_t> positionOffsets_;
   std::vector<int> positions_;
 };

@@ -47,7 +47,7 @@ void StaticNonlinear::buildPattern() {
   // Every unknown gets its diagonal: eliminated rows become identity rows.
   for (int i = 0; i < n_; ++i) all.add(&i, 1);
   pattern_ = std::make_unique<fem::AssemblyPattern>(n_, all);
-  K_ = pattern_->newMatrix();
+  pattern_->takeMatrix(K_);
   Kelastic_.resize(0, 0);
   analyzed_ = false;
   factorized_ = Factorized::None;

@@ -81,6 +81,19 @@ TEST(AssemblyPattern, MatchesDenseAssembly) {
   ElementDofs bad;
   bad.add({0, 99});
   EXPECT_THROW(AssemblyPattern(10, bad), aster::Error);
+
+  // The pattern's own matrix, handed over: same pattern, zero values, and only once.
+  SparseMatrix taken;
+  pattern.takeMatrix(taken);
+  ASSERT_EQ(taken.nonZeros(), A.nonZeros());
+  EXPECT_TRUE(std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), taken.innerIndexPtr()));
+  EXPECT_TRUE(std::equal(A.outerIndexPtr(), A.outerIndexPtr() + n + 1, taken.outerIndexPtr()));
+  EXPECT_EQ(Eigen::MatrixXd(taken).norm(), 0.0);
+  const Eigen::MatrixXd ones = Eigen::MatrixXd::Ones(8, 8);
+  pattern.addMatrix(0, ones, taken);  // still assembles into it
+  EXPECT_EQ(taken.coeff(map.dof(5, 1), map.dof(0, 0)), 1.0);
+  EXPECT_THROW(pattern.takeMatrix(taken), aster::Error);
+  EXPECT_THROW(pattern.newMatrix(), aster::Error);
 }
 
 TEST(AssemblyPattern, ColouringSeparatesNeighbours) {
