@@ -118,6 +118,7 @@ void run(int N, const std::string& method) {
 
 int main(int argc, char** argv) {
   solver::selectBlasKernels(argv);
+  solver::selectHugePages(argv);
   solver::keepFactorWorkspaces();
   std::vector<int> sizes;
   std::string method = "CHOLMOD";

@@ -45,6 +45,7 @@ int usageError(const std::string& what) {
 
 int main(int argc, char** argv) {
   aster::solver::selectBlasKernels(argv);
+  aster::solver::selectHugePages(argv);
   aster::solver::keepFactorWorkspaces();
   namespace fs = std::filesystem;
   aster::lang::Session session;
