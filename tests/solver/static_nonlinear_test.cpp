@@ -28,6 +28,7 @@ const char* kUy = "-0.05*(X-0.5)**2*(1+Y) - 0.01*Y";
 struct Outcome {
   double l2Error = 0;
   std::vector<std::vector<double>> residuals;  // per instant
+  solver::NewtonStatistics statistics;
 };
 
 Outcome solve(int N, mesh::CellType type, mechanics::Kinematics kin, int steps) {
@@ -76,6 +77,7 @@ Outcome solve(int N, mesh::CellType type, mechanics::Kinematics kin, int steps) 
   for (int k = 0; k <= steps; ++k) times.push_back(double(k) / steps);
   Outcome out;
   newton.run(U, times, [&](const solver::ConvergedInstant& c) { out.residuals.push_back(c.residuals); });
+  out.statistics = newton.statistics();
 
   // L2 error of the displacement, 6x6 Gauss points per quadrangle, degree 10 on triangles.
   double e2 = 0;
@@ -126,6 +128,14 @@ TEST(StaticNonlinear, NewtonConvergesQuadraticallyOnSsnp150WithoutContact) {
       }
     EXPECT_GE(checked, 1);
   }
+}
+
+// Near convergence the residual is assembled alone first: every tangent assembled is
+// factorized, none is assembled at an iteration that converges.
+TEST(StaticNonlinear, NoTangentIsAssembledForTheConvergedIterate) {
+  const Outcome o = solve(8, mesh::CellType::QUAD8, mechanics::Kinematics::TotalLagrangianSVK, 4);
+  EXPECT_EQ(o.statistics.tangentAssemblies, o.statistics.factorizations);
+  EXPECT_EQ(o.statistics.factorizations, o.statistics.iterations);
 }
 
 TEST(StaticNonlinear, SmallStrainIsLinearOneIteration) {
