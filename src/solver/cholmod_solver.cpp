@@ -328,7 +328,13 @@ void CholmodSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   rhs.x = const_cast<double*>(b.data());
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* solution = cholmod_solve(CHOLMOD_A, h_->factor, &rhs, &h_->common);
+  cholmod_dense* solution = nullptr;
+  {
+    // One BLAS thread: the triangular solves are bound by memory, and a second BLAS thread,
+    // once woken, spins for a while after the call, taking a core from what runs next.
+    ScopedBlasThreads one(1);
+    solution = cholmod_solve(CHOLMOD_A, h_->factor, &rhs, &h_->common);
+  }
   if (!solution) throw Error(name() + ": solve failed: " + cholmodStatus(h_->common.status));
   x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solution->x), b.size());
   cholmod_free_dense(&solution, &h_->common);

@@ -11,6 +11,9 @@ extern "C" {
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
             const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
+void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k, const double* alpha,
+            const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
+            const int* ldc);
 void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
             const int* lda, const double* beta, double* c, const int* ldc);
 }
@@ -43,6 +46,83 @@ void addIntoUpdate(const double* update, int u, const int* relative, int split, 
     double* destination = parentUpdate + static_cast<size_t>(relative[j] - width) * parentU - width;
     for (int i = j; i < u; ++i) destination[relative[i]] += column[i];
   }
+}
+
+// Dense kernels of the fronts at the top of the tree, on `parts` threads (one-thread BLAS
+// each): the work split in independent pieces rather than left to a multithreaded BLAS,
+// whose idle threads spin for a while after each call and slow down whatever runs next.
+template <class Piece>
+void inParallel(int parts, Piece&& piece) {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static, 1) num_threads(parts)
+#endif
+  for (int p = 0; p < parts; ++p) piece(p);
+}
+
+// Row r0 of the p-th of `parts` equal slices of [0, rows).
+int slice(int rows, int parts, int p) { return static_cast<int>(static_cast<long long>(rows) * p / parts); }
+
+// B (rows x n, ld ldb) := B L^-T, L lower n x n: slices of rows.
+void parallelTrsm(int parts, int rows, int n, const double* L, int ldl, double* B, int ldb) {
+  const double one = 1.0;
+  inParallel(parts, [&](int p) {
+    const int r0 = slice(rows, parts, p), r = slice(rows, parts, p + 1) - r0;
+    if (r > 0) dtrsm_("R", "L", "T", "N", &r, &n, &one, L, &ldl, B + r0, &ldb);
+  });
+}
+
+// Lower triangle of C (n x n) := beta C - A A^T (A n x k): slices of columns of equal work,
+// each a dsyrk on its diagonal block and a dgemm below it.
+void parallelSyrk(int parts, int n, int k, const double* A, int lda, double beta, double* C, int ldc) {
+  std::vector<int> first(parts + 1, n);
+  first[0] = 0;
+  const double total = 0.5 * n * (n + 1.0);
+  double work = 0;
+  for (int j = 0, p = 1; j < n && p < parts; ++j) {
+    work += n - j;
+    if (work >= total * p / parts) first[p++] = j + 1;
+  }
+  const double minusOne = -1.0;
+  inParallel(parts, [&](int p) {
+    const int c0 = first[p], c = first[p + 1] - c0, below = n - c0 - c;
+    if (c <= 0) return;
+    double* diagonal = C + c0 + static_cast<size_t>(c0) * ldc;
+    dsyrk_("L", "N", &c, &k, &minusOne, A + c0, &lda, &beta, diagonal, &ldc);
+    if (below > 0)
+      dgemm_("N", "T", &below, &c, &k, &minusOne, A + c0 + c, &lda, A + c0, &lda, &beta, diagonal + c, &ldc);
+  });
+}
+
+// C (rows x n) -= A B^T (A rows x k, B n x k): slices of rows.
+void parallelGemm(int parts, int rows, int n, int k, const double* A, int lda, const double* B, int ldb, double* C,
+                  int ldc) {
+  const double one = 1.0, minusOne = -1.0;
+  inParallel(parts, [&](int p) {
+    const int r0 = slice(rows, parts, p), r = slice(rows, parts, p + 1) - r0;
+    if (r > 0) dgemm_("N", "T", &r, &n, &k, &minusOne, A + r0, &lda, B, &ldb, &one, C + r0, &ldc);
+  });
+}
+
+// The columns of a front (block: m x width, ld m) factorized right-looking, panel by panel:
+// each panel's dpotrf, then the rows below it (dtrsm) and the columns right of it (dsyrk,
+// dgemm) in slices. Returns LAPACK's info (0, or the 1-based column of a non-positive pivot).
+int parallelFrontCholesky(int parts, int width, int m, double* block) {
+  constexpr int kPanel = 192;
+  for (int p = 0; p < width; p += kPanel) {
+    const int b = std::min(kPanel, width - p);
+    double* panel = block + p + static_cast<size_t>(p) * m;
+    int info = 0;
+    dpotrf_("L", &b, panel, &m, &info);
+    if (info != 0) return p + info;
+    const int below = m - p - b, right = width - p - b;
+    if (below > 0) parallelTrsm(parts, below, b, panel, m, panel + b, m);
+    if (right > 0) {
+      double* trailing = panel + b + static_cast<size_t>(b) * m;
+      parallelSyrk(parts, right, b, panel + b, m, 1.0, trailing, m);
+      parallelGemm(parts, below - right, right, b, panel + b + right, m, panel + b, m, trailing + right, m);
+    }
+  }
+  return 0;
 }
 
 }  // namespace
@@ -191,7 +271,7 @@ void MultifrontalCholesky::schedule(int threads, double parallelFlops) {
 }
 
 int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* values, double* pivots,
-                                             Updates& updates) const {
+                                             Updates& updates, int parts) const {
   const SupernodalStructure& S = structure_;
   const int k1 = S.firstColumn[s];
   const int width = S.firstColumn[s + 1] - k1;
@@ -213,15 +293,26 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
     addIntoBlock(update, cu, relative, blockColumns(relative, cu, width), block, m);
   }
   int info = 0;
-  dpotrf_("L", &width, block, &m, &info);
+  if (parts > 1) {
+    info = parallelFrontCholesky(parts, width, m, block);  // the rows below too
+  } else {
+    dpotrf_("L", &width, block, &m, &info);
+    if (info == 0 && u > 0) {
+      const double one = 1.0;
+      dtrsm_("R", "L", "T", "N", &u, &width, &one, block, &m, block + width, &m);
+    }
+  }
   if (info != 0) return k1 + std::max(info, 1) - 1;
   if (pivots)
     for (int k = 0; k < width; ++k) pivots[k1 + k] = block[k + static_cast<size_t>(k) * m];
   if (u > 0) {
-    const double one = 1.0, minusOne = -1.0, zero = 0.0;
     updates[s].reset(new double[static_cast<size_t>(u) * u]);  // written whole by dsyrk
-    dtrsm_("R", "L", "T", "N", &u, &width, &one, block, &m, block + width, &m);
-    dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &zero, updates[s].get(), &u);
+    if (parts > 1) {
+      parallelSyrk(parts, u, width, block + width, m, 0.0, updates[s].get(), u);
+    } else {
+      const double minusOne = -1.0, zero = 0.0;
+      dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &zero, updates[s].get(), &u);
+    }
   }
   for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
     int cu = 0;
@@ -236,28 +327,35 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
 int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, double* pivots) const {
   Updates updates(structure_.supernodeCount);
   const double* a = A.valuePtr();
-  int failed = INT_MAX;
-  if (!threadSupernodes_.empty()) {
-    // Each thread stops at its own first failure, so the column reported is the one a
-    // single thread would meet first, whatever the number of threads.
-    std::vector<int> failure(threadSupernodes_.size(), INT_MAX);
-    ScopedBlasThreads oneEach(1);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static, 1) num_threads(static_cast<int>(threadSupernodes_.size()))
-#endif
-    for (int t = 0; t < static_cast<int>(threadSupernodes_.size()); ++t)
-      for (int s : threadSupernodes_[t]) {
-        const int column = factorizeSupernode(s, a, values, pivots, updates);
-        if (column >= 0) {
-          failure[t] = column;
-          break;
-        }
-      }
-    failed = *std::min_element(failure.begin(), failure.end());
+  const int threads = static_cast<int>(threadSupernodes_.size());
+  if (threads == 0) {
+    for (int s : topSupernodes_) {
+      const int column = factorizeSupernode(s, a, values, pivots, updates, 1);
+      if (column >= 0) return column;
+    }
+    return -1;
   }
+  // Every BLAS call on its calling thread: subtrees on their threads, then the large fronts
+  // of the top of the tree in slices.
+  ScopedBlasThreads oneEach(1);
+  // Each thread stops at its own first failure, so the column reported is the one a
+  // single thread would meet first, whatever the number of threads.
+  std::vector<int> failure(threads, INT_MAX);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+#endif
+  for (int t = 0; t < threads; ++t)
+    for (int s : threadSupernodes_[t]) {
+      const int column = factorizeSupernode(s, a, values, pivots, updates, 1);
+      if (column >= 0) {
+        failure[t] = column;
+        break;
+      }
+    }
+  const int failed = *std::min_element(failure.begin(), failure.end());
   if (failed != INT_MAX) return failed;
   for (int s : topSupernodes_) {
-    const int column = factorizeSupernode(s, a, values, pivots, updates);
+    const int column = factorizeSupernode(s, a, values, pivots, updates, threads);
     if (column >= 0) return column;
   }
   return -1;

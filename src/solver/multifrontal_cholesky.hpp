@@ -11,7 +11,7 @@
 //
 // Subtrees of the elimination tree are independent: they are shared out between threads,
 // each with a one-thread BLAS, and the top of the tree, whose fronts are large, runs after
-// them with every BLAS thread. Each front is computed the same way on any thread, in the
+// them, each front's dense work split between the threads. Each front is computed the same way on any thread, in the
 // same order of its children, and a failure names the same column as on one thread.
 //
 // The symbolic structure (ordering, supernodes, row patterns, storage of L) is CHOLMOD's
@@ -56,7 +56,9 @@ class MultifrontalCholesky {
 
  private:
   using Updates = std::vector<std::unique_ptr<double[]>>;  // per supernode, until its parent adds it
-  int factorizeSupernode(int s, const double* a, double* values, double* pivots, Updates& updates) const;
+  // parts > 1: the front's dense work split between that many threads (top of the tree).
+  int factorizeSupernode(int s, const double* a, double* values, double* pivots, Updates& updates,
+                         int parts) const;
   void schedule(int threads, double parallelFlops);
 
   SupernodalStructure structure_;

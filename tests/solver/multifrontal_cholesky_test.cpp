@@ -93,6 +93,25 @@ SparseMatrix twoLaplacians(int m) {
   return fromTriplets(2 * n, t);
 }
 
+// 7-point Laplacian on an m^3 grid: separators of m^2 unknowns, so the fronts at the top of
+// the tree are wider than a panel of the parallel dense factorization.
+SparseMatrix laplacian3d(int m) {
+  auto id = [m](int i, int j, int k) { return (i * m + j) * m + k; };
+  Triplets t;
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < m; ++k) {
+        t.emplace_back(id(i, j, k), id(i, j, k), 6.0);
+        if (i > 0) t.emplace_back(id(i, j, k), id(i - 1, j, k), -1.0);
+        if (i + 1 < m) t.emplace_back(id(i, j, k), id(i + 1, j, k), -1.0);
+        if (j > 0) t.emplace_back(id(i, j, k), id(i, j - 1, k), -1.0);
+        if (j + 1 < m) t.emplace_back(id(i, j, k), id(i, j + 1, k), -1.0);
+        if (k > 0) t.emplace_back(id(i, j, k), id(i, j, k - 1), -1.0);
+        if (k + 1 < m) t.emplace_back(id(i, j, k), id(i, j, k + 1), -1.0);
+      }
+  return fromTriplets(m * m * m, t);
+}
+
 struct Case {
   const char* name;
   int ordering;
@@ -109,8 +128,11 @@ TEST_P(AgainstCholmod, ComputesCholmodsFactor) {
   const struct {
     SparseMatrix A;
     int subtrees;
-  } problems[] = {{laplacian2d(50), GetParam().subtrees}, {twoLaplacians(30), parallel ? GetParam().threads : 0}};
+  } problems[] = {{laplacian2d(50), GetParam().subtrees},
+                  {twoLaplacians(30), parallel ? GetParam().threads : 0},
+                  {laplacian3d(18), GetParam().subtrees}};
   for (const auto& [A, subtrees] : problems) {
+    if (GetParam().ordering == CHOLMOD_NATURAL && A.rows() > 5000) continue;  // a band of m^2: dense and slow
     CholmodReference reference(A, GetParam().ordering);
     ASSERT_EQ(reference.referenceMinor(), static_cast<size_t>(A.rows()));
     const MultifrontalCholesky plan(reference.structure(), A, GetParam().threads, 0.0);
@@ -167,6 +189,19 @@ TEST(MultifrontalCholesky, ReportsTheColumnOfTheFirstNonPositivePivot) {
     std::vector<double> values(reference.storage());
     EXPECT_EQ(plan.factorize(A, values.data()), static_cast<int>(reference.referenceMinor())) << threads;
   }
+}
+
+// The same in the widest front, the root, whose dense work is split between threads: a
+// negative diagonal on the last pivot fails there and nowhere before.
+TEST(MultifrontalCholesky, ReportsANonPositivePivotInTheRootFront) {
+  SparseMatrix A = laplacian3d(16);
+  const int last = CholmodReference(A, CHOLMOD_NESDIS).permutation(static_cast<int>(A.rows()) - 1);
+  A.coeffRef(last, last) = -1.0;
+  CholmodReference reference(A, CHOLMOD_NESDIS);
+  ASSERT_EQ(reference.referenceMinor(), static_cast<size_t>(A.rows() - 1));
+  const MultifrontalCholesky plan(reference.structure(), A, 2, 0.0);
+  std::vector<double> values(reference.storage());
+  EXPECT_EQ(plan.factorize(A, values.data()), A.rows() - 1);
 }
 
 // Small problems stay on the calling thread.
