@@ -270,7 +270,9 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
     const int ok = cholmod_factorize(&view, L, &c);
     if (!ok || c.status < CHOLMOD_OK) throw Error(name() + ": numeric factorization failed: " + cholmodStatus(c.status));
   }
-  stats_.numericSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double numeric = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (stats_.numericSeconds == 0.0) stats_.firstNumericSeconds = numeric;
+  stats_.numericSeconds += numeric;
   if (L->minor < L->n) {
     const int* perm = static_cast<const int*>(L->Perm);
     const int col = perm ? perm[L->minor] : static_cast<int>(L->minor);

@@ -39,6 +39,7 @@ struct LinearSolverStatistics {
   long long factorNonzeros = -1;  // entries stored in the factors after the last factorize; -1: unknown
   double factorFlops = -1.0;      // flops of the last factorization as the library reports them; -1: not reported
   double numericSeconds = 0.0;    // the numeric factorizations alone (library call), total
+  double firstNumericSeconds = 0.0;  // the first of them, which also touches the factor's memory first
   std::string ordering;           // fill-reducing ordering the analysis chose, when the library tells it
 };
 
