@@ -112,7 +112,9 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     // converged one. The residual is then assembled alone first (a fifth of the cost of
     // residual and tangent), and the tangent only if the iteration goes on (SVK square:
     // 5 of 20 tangent assemblies saved).
-    const bool residualFirst = assembleTangent && k > 0 && !statusChanged && !history.empty() &&
+    // From the third iteration: the residual of the first is the previous instant's (imposed
+    // displacements enter with the first correction) and says nothing of the coming one.
+    const bool residualFirst = assembleTangent && k >= 2 && !statusChanged &&
                                settings_.useRela && !settings_.useMaxi &&
                                history.back() <= std::sqrt(settings_.resiGlobRela);
     try {
