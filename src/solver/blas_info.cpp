@@ -73,57 +73,58 @@ void selectBlasKernels(char** argv) {
 }
 
 namespace {
-using GetThreads = int (*)();
-using SetThreads = void (*)(int);
-GetThreads getBlasThreads() {
-  static const auto f = reinterpret_cast<GetThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-  return f;
+// A pair of int getter and setter looked up at run time (OpenBLAS's thread count, OpenMP's
+// dynamic adjustment: CHOLMOD brings libgomp, and this library needs no OpenMP of its own);
+// both null when the process has no such library.
+struct IntSetting {
+  int (*get)() = nullptr;
+  void (*set)(int) = nullptr;
+  IntSetting(const char* getter, const char* setter) {
+    get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, getter));
+    set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, setter));
+    if (!get || !set) {
+      get = nullptr;
+      set = nullptr;
+    }
+  }
+};
+const IntSetting& blasThreads() {
+  static const IntSetting s("openblas_get_num_threads", "openblas_set_num_threads");
+  return s;
 }
-SetThreads setBlasThreads() {
-  static const auto f = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-  return f;
+const IntSetting& dynamicThreads() {
+  static const IntSetting s("omp_get_dynamic", "omp_set_dynamic");
+  return s;
 }
 }  // namespace
 
 void chooseBlasThreads(int unknowns) {
   if (getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS")) return;
-  if (!getBlasThreads() || !setBlasThreads()) return;
-  static const int all = getBlasThreads()();  // what OpenBLAS chose at start-up, before any change
-  setBlasThreads()(unknowns < kSmallSystem ? 1 : all);
+  const IntSetting& blas = blasThreads();
+  if (!blas.get) return;
+  static const int all = blas.get();  // what OpenBLAS chose at start-up, before any change
+  blas.set(unknowns < kSmallSystem ? 1 : all);
 }
 
 ScopedBlasThreads::ScopedBlasThreads(int threads) {
-  if (!getBlasThreads() || !setBlasThreads()) return;
-  previous_ = getBlasThreads()();
-  if (previous_ != threads) setBlasThreads()(threads);
+  const IntSetting& blas = blasThreads();
+  if (!blas.get) return;
+  previous_ = blas.get();
+  if (previous_ != threads) blas.set(threads);
 }
 
 ScopedBlasThreads::~ScopedBlasThreads() {
-  if (previous_ > 0 && previous_ != getBlasThreads()()) setBlasThreads()(previous_);
+  if (previous_ > 0 && previous_ != blasThreads().get()) blasThreads().set(previous_);
 }
-
-namespace {
-using GetDynamic = int (*)();
-using SetDynamic = void (*)(int);
-// Looked up at run time: CHOLMOD brings libgomp, and this library needs no OpenMP of its own.
-GetDynamic getDynamic() {
-  static const auto f = reinterpret_cast<GetDynamic>(dlsym(RTLD_DEFAULT, "omp_get_dynamic"));
-  return f;
-}
-SetDynamic setDynamic() {
-  static const auto f = reinterpret_cast<SetDynamic>(dlsym(RTLD_DEFAULT, "omp_set_dynamic"));
-  return f;
-}
-}  // namespace
 
 DynamicOpenMPThreads::DynamicOpenMPThreads() {
-  if (!getDynamic() || !setDynamic()) return;
-  previous_ = getDynamic()();
-  setDynamic()(1);
+  if (!dynamicThreads().get) return;
+  previous_ = dynamicThreads().get();
+  dynamicThreads().set(1);
 }
 
 DynamicOpenMPThreads::~DynamicOpenMPThreads() {
-  if (previous_ >= 0) setDynamic()(previous_);
+  if (previous_ >= 0) dynamicThreads().set(previous_);
 }
 
 }  // namespace aster::solver

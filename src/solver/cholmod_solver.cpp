@@ -15,6 +15,7 @@
 #endif
 
 #include "solver/blas_info.hpp"
+#include "solver/cholmod_views.hpp"
 #include "solver/pivot_audit.hpp"
 #include "solver/stopwatch.hpp"
 
@@ -36,24 +37,6 @@ struct CholmodSolver::Handles {
 namespace {
 
 constexpr Eigen::Index kNestedDissectionSize = 20000;
-
-// A view of A for CHOLMOD, without copying: symmetric, lower triangle read (stype = -1),
-// which saves the supernodal factorization one transpose per call over the upper one.
-cholmod_sparse lowerView(const SparseMatrix& A) {
-  cholmod_sparse s{};
-  s.nrow = s.ncol = static_cast<size_t>(A.rows());
-  s.nzmax = static_cast<size_t>(A.nonZeros());
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
-  s.x = const_cast<double*>(A.valuePtr());
-  s.stype = -1;
-  s.itype = CHOLMOD_INT;
-  s.xtype = CHOLMOD_REAL;
-  s.dtype = CHOLMOD_DOUBLE;
-  s.sorted = 0;
-  s.packed = 1;
-  return s;
-}
 
 std::string cholmodStatus(int status) {
   switch (status) {
@@ -109,17 +92,7 @@ std::vector<int> nodeNestedDissection(const SparseMatrix& M, cholmod_common& c) 
     }
     p.push_back(static_cast<int>(i.size()));
   }
-  cholmod_sparse graph{};
-  graph.nrow = graph.ncol = static_cast<size_t>(groups);
-  graph.nzmax = i.size();
-  graph.p = p.data();
-  graph.i = i.data();
-  graph.stype = -1;
-  graph.itype = CHOLMOD_INT;
-  graph.xtype = CHOLMOD_PATTERN;
-  graph.dtype = CHOLMOD_DOUBLE;
-  graph.sorted = 0;
-  graph.packed = 1;
+  cholmod_sparse graph = symmetricView(groups, p.data(), i.data(), nullptr);
   std::vector<int> order(groups), parent(groups), member(groups);
   if (cholmod_nested_dissection(&graph, nullptr, 0, order.data(), parent.data(), member.data(), &c) < 0) return {};
   std::vector<int> perm;
@@ -235,14 +208,7 @@ void CholmodSolver::planMultifrontal(const SparseMatrix& A) {
   if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, &c) || !L->x)
     throw Error(name() + ": cannot allocate the factor: " + cholmodStatus(c.status));
   adviseHugePages(L->x, L->xsize * sizeof(double));
-  SupernodalStructure structure;
-  structure.n = static_cast<int>(L->n);
-  structure.supernodeCount = static_cast<int>(L->nsuper);
-  structure.firstColumn = static_cast<const int*>(L->super);
-  structure.rowStart = static_cast<const int*>(L->pi);
-  structure.valueStart = static_cast<const int*>(L->px);
-  structure.rows = static_cast<const int*>(L->s);
-  structure.permutation = static_cast<const int*>(L->Perm);
+  const SupernodalStructure structure = supernodalStructure(*L);
   int threads = 1;
 #ifdef _OPENMP
   threads = omp_get_max_threads();

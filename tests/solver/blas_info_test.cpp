@@ -19,5 +19,21 @@ TEST(BlasInfo, ReportsTheLibraryCholmodLoaded) {
   }
 }
 
+// OpenBLAS's thread count inside the scope, the previous one after; nested scopes unwind.
+TEST(BlasInfo, ScopedBlasThreadsRestoresTheCount) {
+  const int before = blasInUse().threads;
+  {
+    ScopedBlasThreads one(1);
+    EXPECT_EQ(blasInUse().threads, 1);
+    {
+      ScopedBlasThreads two(2);
+      if (blasInUse().openblasConfig.empty()) GTEST_SKIP() << "not OpenBLAS";
+      EXPECT_EQ(blasInUse().threads, 2);
+    }
+    EXPECT_EQ(blasInUse().threads, 1);
+  }
+  EXPECT_EQ(blasInUse().threads, before);
+}
+
 }  // namespace
 }  // namespace aster::solver

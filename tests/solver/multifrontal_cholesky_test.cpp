@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "solver/cholmod_views.hpp"
 #include "test_matrices.hpp"
 
 namespace aster::solver {
@@ -24,17 +25,7 @@ class CholmodReference {
     c_.supernodal = CHOLMOD_SUPERNODAL;
     c_.nmethods = 1;
     c_.method[0].ordering = ordering;
-    cholmod_sparse view{};
-    view.nrow = view.ncol = static_cast<size_t>(A.rows());
-    view.nzmax = static_cast<size_t>(A.nonZeros());
-    view.p = const_cast<int*>(A.outerIndexPtr());
-    view.i = const_cast<int*>(A.innerIndexPtr());
-    view.x = const_cast<double*>(A.valuePtr());
-    view.stype = -1;
-    view.itype = CHOLMOD_INT;
-    view.xtype = CHOLMOD_REAL;
-    view.dtype = CHOLMOD_DOUBLE;
-    view.packed = 1;
+    cholmod_sparse view = lowerView(A);
     L_ = cholmod_analyze(&view, &c_);
     if (!L_) throw Error("analysis failed");
     cholmod_factor* reference = cholmod_copy_factor(L_, &c_);
@@ -45,13 +36,7 @@ class CholmodReference {
       referenceValues_.assign(x, x + reference->xsize);
     }
     cholmod_free_factor(&reference, &c_);
-    structure_.n = static_cast<int>(L_->n);
-    structure_.supernodeCount = static_cast<int>(L_->nsuper);
-    structure_.firstColumn = static_cast<const int*>(L_->super);
-    structure_.rowStart = static_cast<const int*>(L_->pi);
-    structure_.valueStart = static_cast<const int*>(L_->px);
-    structure_.rows = static_cast<const int*>(L_->s);
-    structure_.permutation = static_cast<const int*>(L_->Perm);
+    structure_ = supernodalStructure(*L_);
   }
   ~CholmodReference() {
     cholmod_free_factor(&L_, &c_);
