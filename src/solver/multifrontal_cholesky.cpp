@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <climits>
 #include <memory>
+#include <new>
 #include <numeric>
 
 #include "solver/blas_info.hpp"
@@ -340,18 +341,28 @@ int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, doubl
   ScopedBlasThreads oneEach(1);
   // Each thread stops at its own first failure, so the column reported is the one a
   // single thread would meet first, whatever the number of threads.
+  // An exception must not leave an OpenMP region: an update matrix that cannot be
+  // allocated is reported after it.
   std::vector<int> failure(threads, INT_MAX);
+  std::vector<char> outOfMemory(threads, 0);
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static, 1) num_threads(threads)
 #endif
-  for (int t = 0; t < threads; ++t)
-    for (int s : threadSupernodes_[t]) {
-      const int column = factorizeSupernode(s, a, values, pivots, updates, 1);
-      if (column >= 0) {
-        failure[t] = column;
-        break;
+  for (int t = 0; t < threads; ++t) {
+    try {
+      for (int s : threadSupernodes_[t]) {
+        const int column = factorizeSupernode(s, a, values, pivots, updates, 1);
+        if (column >= 0) {
+          failure[t] = column;
+          break;
+        }
       }
+    } catch (const std::bad_alloc&) {
+      outOfMemory[t] = 1;
     }
+  }
+  if (std::find(outOfMemory.begin(), outOfMemory.end(), 1) != outOfMemory.end())
+    throw Error("multifrontal Cholesky: out of memory for the update matrices of the factorization");
   const int failed = *std::min_element(failure.begin(), failure.end());
   if (failed != INT_MAX) return failed;
   for (int s : topSupernodes_) {
