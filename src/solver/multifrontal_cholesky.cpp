@@ -44,8 +44,8 @@ void addIntoUpdate(const double* update, int u, const int* relative, int split, 
                    int parentU) {
   for (int j = split; j < u; ++j) {
     const double* column = update + static_cast<size_t>(j) * u;
-    double* destination = parentUpdate + static_cast<size_t>(relative[j] - width) * parentU - width;
-    for (int i = j; i < u; ++i) destination[relative[i]] += column[i];
+    double* destination = parentUpdate + static_cast<size_t>(relative[j] - width) * parentU;
+    for (int i = j; i < u; ++i) destination[relative[i] - width] += column[i];
   }
 }
 
@@ -60,7 +60,7 @@ void inParallel(int parts, Piece&& piece) {
   for (int p = 0; p < parts; ++p) piece(p);
 }
 
-// Row r0 of the p-th of `parts` equal slices of [0, rows).
+// First row of the p-th of `parts` equal slices of [0, rows).
 int slice(int rows, int parts, int p) { return static_cast<int>(static_cast<long long>(rows) * p / parts); }
 
 // B (rows x n, ld ldb) := B L^-T, L lower n x n: slices of rows.
@@ -256,7 +256,8 @@ void MultifrontalCholesky::schedule(int threads, double parallelFlops) {
     std::iota(topSupernodes_.begin(), topSupernodes_.end(), 0);
     return;
   }
-  // Members of each subtree: a supernode belongs to the subtree of its first top-free ancestor chain.
+  // Every supernode below a subtree's root goes to that root's thread (a parent is numbered
+  // after its children, so walking down the numbers meets the parent first).
   std::vector<int> thread(ns, -1);
   for (int t = 0; t < threads; ++t)
     for (int root : bins[t]) thread[root] = t;
