@@ -73,7 +73,7 @@ class MultifrontalCholesky {
   std::vector<double> flops_;          // estimate per supernode
   double totalFlops_ = 0;
   std::vector<std::vector<int>> threadSupernodes_;  // per thread, in elimination order
-  std::vector<int> topSupernodes_;                 // after them, with every BLAS thread
+  std::vector<int> topSupernodes_;                 // after them, each front split between the threads
 };
 
 }  // namespace aster::solver
