@@ -73,41 +73,34 @@ void selectBlasKernels(char** argv) {
 }
 
 namespace {
-// A pair of int getter and setter looked up at run time (OpenBLAS's thread count, OpenMP's
-// dynamic adjustment: CHOLMOD brings libgomp, and this library needs no OpenMP of its own);
-// both null when the process has no such library.
-struct IntSetting {
-  int (*get)() = nullptr;
-  void (*set)(int) = nullptr;
-  IntSetting(const char* getter, const char* setter) {
-    get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, getter));
-    set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, setter));
+// OpenBLAS's thread count, looked up at run time: getter and setter both null when the BLAS
+// is another.
+struct BlasThreadCount {
+  int (*get)() = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  void (*set)(int) = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  BlasThreadCount() {
     if (!get || !set) {
       get = nullptr;
       set = nullptr;
     }
   }
 };
-const IntSetting& blasThreads() {
-  static const IntSetting s("openblas_get_num_threads", "openblas_set_num_threads");
-  return s;
-}
-const IntSetting& dynamicThreads() {
-  static const IntSetting s("omp_get_dynamic", "omp_set_dynamic");
-  return s;
+const BlasThreadCount& blasThreads() {
+  static const BlasThreadCount count;
+  return count;
 }
 }  // namespace
 
 void chooseBlasThreads(int unknowns) {
   if (getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS")) return;
-  const IntSetting& blas = blasThreads();
+  const BlasThreadCount& blas = blasThreads();
   if (!blas.get) return;
   static const int all = blas.get();  // what OpenBLAS chose at start-up, before any change
   blas.set(unknowns < kSmallSystem ? 1 : all);
 }
 
 ScopedBlasThreads::ScopedBlasThreads(int threads) {
-  const IntSetting& blas = blasThreads();
+  const BlasThreadCount& blas = blasThreads();
   if (!blas.get) return;
   previous_ = blas.get();
   if (previous_ != threads) blas.set(threads);
@@ -115,16 +108,6 @@ ScopedBlasThreads::ScopedBlasThreads(int threads) {
 
 ScopedBlasThreads::~ScopedBlasThreads() {
   if (previous_ > 0 && previous_ != blasThreads().get()) blasThreads().set(previous_);
-}
-
-DynamicOpenMPThreads::DynamicOpenMPThreads() {
-  if (!dynamicThreads().get) return;
-  previous_ = dynamicThreads().get();
-  dynamicThreads().set(1);
-}
-
-DynamicOpenMPThreads::~DynamicOpenMPThreads() {
-  if (previous_ >= 0) dynamicThreads().set(previous_);
 }
 
 }  // namespace aster::solver

@@ -48,22 +48,4 @@ class ScopedBlasThreads {
   int previous_ = -1;  // openblas_get_num_threads() before, -1 without OpenBLAS
 };
 
-// While alive, OpenMP adjusts the number of threads of new parallel regions to
-// the cores free (omp_set_dynamic(1); the previous setting is restored after).
-// Debian's CHOLMOD (SuiteSparse 5.12) asks for 4 threads, whatever the machine,
-// in OpenMP loops of every supernode of its numeric factorization: on 2 cores
-// those threads and OpenBLAS's wait for each other through futexes and
-// sched_yield, which took a third of the factorization time (SVK square N = 128:
-// 8.0 s -> 4.7 s of factorizations). Nothing when no OpenMP runtime is loaded.
-class DynamicOpenMPThreads {
- public:
-  DynamicOpenMPThreads();
-  ~DynamicOpenMPThreads();
-  DynamicOpenMPThreads(const DynamicOpenMPThreads&) = delete;
-  DynamicOpenMPThreads& operator=(const DynamicOpenMPThreads&) = delete;
-
- private:
-  int previous_ = -1;  // omp_get_dynamic() before, -1 when there is no OpenMP runtime
-};
-
 }  // namespace aster::solver

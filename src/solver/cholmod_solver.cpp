@@ -1,9 +1,6 @@
 #include "solver/cholmod_solver.hpp"
 
 #include <cholmod.h>
-#include <sys/mman.h>
-
-#include <cstdint>
 
 #include <algorithm>
 #include <chrono>
@@ -102,16 +99,6 @@ std::vector<int> nodeNestedDissection(const SparseMatrix& M, cholmod_common& c) 
   return perm;
 }
 
-// Memory touched for the first time costs a page fault per 4 KiB page, about 10 us each on
-// the virtual machines this runs on (2.8 s per GiB); transparent huge pages, when the system
-// grants them on request, cut that and the TLB misses of the factorization.
-void adviseHugePages(void* data, size_t bytes) {
-  constexpr uintptr_t huge = 2u << 20;
-  const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + huge - 1) & ~(huge - 1);
-  const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(huge - 1);
-  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-}
-
 }  // namespace
 
 CholmodSolver::CholmodSolver(Mode mode) : mode_(mode), h_(std::make_unique<Handles>()) {
@@ -207,7 +194,6 @@ void CholmodSolver::planMultifrontal(const SparseMatrix& A) {
   if (!L->is_super) throw Error(name() + ": the analysis did not produce a supernodal factor");
   if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, &c) || !L->x)
     throw Error(name() + ": cannot allocate the factor: " + cholmodStatus(c.status));
-  adviseHugePages(L->x, L->xsize * sizeof(double));
   const SupernodalStructure structure = supernodalStructure(*L);
   int threads = 1;
 #ifdef _OPENMP
@@ -231,7 +217,6 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
     const int failed = multifrontal_->factorize(M, static_cast<double*>(L->x), pivots_.data());
     L->minor = failed < 0 ? L->n : static_cast<size_t>(failed);
   } else {
-    DynamicOpenMPThreads threads;
     cholmod_sparse view = lowerView(M);
     const int ok = cholmod_factorize(&view, L, &c);
     if (!ok || c.status < CHOLMOD_OK) throw Error(name() + ": numeric factorization failed: " + cholmodStatus(c.status));

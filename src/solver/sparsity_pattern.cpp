@@ -67,53 +67,19 @@ bool rowsSorted(const Matrix& A) {
 
 }  // namespace
 
+void requireSymmetric(const Matrix& A, double relTol, const std::string& method) {
+  if (A.isCompressed() && rowsSorted(A)) {
+    SymmetryCheck(A).require(A, relTol, method);
+    return;
+  }
+  const Matrix transposed = A.transpose();
+  const Matrix sorted = transposed.transpose();  // compressed, rows sorted
+  SymmetryCheck(sorted).require(sorted, relTol, method);
+}
+
 // One pass over the entries without building A^T: column j's entries below the diagonal,
 // (i, j) with i > j, are met for increasing j, so their mirrors (j, i) come in row order in
 // column i; a cursor per column walks them. Upper entries the cursor skips have no mirror.
-void requireSymmetric(const Matrix& A, double relTol, const std::string& method) {
-  if (!A.isCompressed() || !rowsSorted(A)) {
-    Matrix sorted = A.transpose();
-    const Matrix back = sorted.transpose();  // compressed, rows sorted
-    requireSymmetric(back, relTol, method);
-    return;
-  }
-  const int n = static_cast<int>(A.cols());
-  const int* p = A.outerIndexPtr();
-  const int* r = A.innerIndexPtr();
-  const double* v = A.valuePtr();
-  // Round-off on an entry is relative to the diagonal too: a_ij = 1e-17 against
-  // a_ji = 0 next to diagonals of order 1 is symmetric for every purpose.
-  std::vector<double> diagonal(n, 0.0);
-  std::vector<int> cursor(p, p + n);
-  for (int j = 0; j < n; ++j) {
-    const int* d = std::lower_bound(r + p[j], r + p[j + 1], j);
-    if (d != r + p[j + 1] && *d == j) diagonal[j] = std::abs(v[d - r]);
-  }
-  auto check = [&](int i, int j, double a, double b) {  // a = A(i,j), b = A(j,i)
-    if (std::abs(a - b) > relTol * (std::abs(a) + std::abs(b) + std::sqrt(diagonal[i] * diagonal[j])))
-      throwUnsymmetric(A, i, j, method);
-  };
-  for (int j = 0; j < n; ++j) {
-    for (int k = p[j]; k < p[j + 1]; ++k) {
-      const int i = r[k];
-      if (i <= j) continue;
-      int& c = cursor[i];
-      while (c < p[i + 1] && r[c] < j) {  // upper entries (r[c], i) without a mirror
-        check(r[c], i, v[c], 0.0);
-        ++c;
-      }
-      if (c < p[i + 1] && r[c] == j) {
-        check(i, j, v[k], v[c]);
-        ++c;
-      } else {
-        check(i, j, v[k], 0.0);
-      }
-    }
-  }
-  for (int i = 0; i < n; ++i)
-    for (int c = cursor[i]; c < p[i + 1] && r[c] < i; ++c) check(r[c], i, v[c], 0.0);
-}
-
 SymmetryCheck::SymmetryCheck(const Matrix& A) {
   sorted_ = A.isCompressed() && rowsSorted(A);
   if (!sorted_) return;

@@ -29,7 +29,9 @@ const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& compressedMatrix(
 void requireSquare(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& A, const std::string& method);
 
 // Throws aster::Error at the first pair A(i,j), A(j,i) that differ by more than
-// relTol * max(|A(i,j)|, |A(j,i)|) (an absent entry counts as 0).
+// relTol * (|A(i,j)| + |A(j,i)| + sqrt(|A(i,i) A(j,j)|)) (an absent entry counts as 0; the
+// diagonals count because a_ij = 1e-17 against a_ji = 0 next to diagonals of order 1 is
+// symmetric for every purpose). A SymmetryCheck of A's pattern, made for this one call.
 void requireSymmetric(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& A, double relTol,
                       const std::string& method);
 

@@ -111,9 +111,9 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     // relative residual below the square root of RESI_GLOB_RELA is usually followed by a
     // converged one. The residual is then assembled alone first (a fifth of the cost of
     // residual and tangent), and the tangent only if the iteration goes on (SVK square:
-    // 5 of 20 tangent assemblies saved).
-    // From the third iteration: the residual of the first is the previous instant's (imposed
-    // displacements enter with the first correction) and says nothing of the coming one.
+    // 5 of 20 tangent assemblies saved). Not before the third iteration: the first one's
+    // residual is the previous instant's (imposed displacements enter with the first
+    // correction) and says nothing of the coming one.
     const bool residualFirst = assembleTangent && k >= 2 && !statusChanged &&
                                settings_.useRela && !settings_.useMaxi &&
                                history.back() <= std::sqrt(settings_.resiGlobRela);
