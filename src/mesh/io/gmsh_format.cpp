@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "mesh/io/gmsh_library.hpp"
+#include "mesh/io/msh2_writer.hpp"
 #include "mesh/io/msh_check.hpp"
 #include "mesh/node_ordering.hpp"
 
@@ -422,6 +423,7 @@ void writeGmshResults(const Mesh& mesh, const std::string& path, const std::vect
         throw Error("gmsh writer: field '" + f.name + "' has " + std::to_string(f.values.size()) +
                     " values, expected " + std::to_string(mesh.nodeCount()) + " nodes x " +
                     std::to_string(f.components.size()) + " components");
+  if (options.version == 2.2 && !options.binary) return writeMsh2(mesh, path, instants);  // no libgmsh
   GmshSession session;
   try {
     setWriteOptions(options);

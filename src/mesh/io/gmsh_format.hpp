@@ -54,6 +54,7 @@ struct GmshWriteOptions {
 void writeGmshMesh(const Mesh& mesh, const std::string& path, const GmshWriteOptions& options = {});
 
 // The mesh followed by one NodeData view per field name, one step per instant.
+// Version 2.2 ASCII is written by aster-lite itself, without libgmsh (msh2_writer.hpp).
 // Fields of 2 components are padded to 3 (gmsh vectors); other counts than
 // 1, 2, 3 or 9 are written as one scalar view per component ("SIEF_SIXX").
 void writeGmshResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,

@@ -1,0 +1,135 @@
+#include "mesh/io/msh2_writer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <tuple>
+
+#include "core/error.hpp"
+#include "mesh/io/gmsh_format.hpp"
+#include "mesh/io/msh_check.hpp"
+#include "mesh/node_ordering.hpp"
+
+namespace aster::mesh {
+namespace {
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+// One $NodeData view: a name, its width (1, 3 or 9) and a value per (node, component).
+struct View {
+  std::string name;
+  int width;
+  const NodalField* field;
+  int component;  // the one component of a split field, -1 when the view holds the field
+  double value(int node, int k) const {
+    const std::size_t nc = field->components.size();
+    if (component >= 0) return field->values[node * nc + component];
+    return k < static_cast<int>(nc) ? field->values[node * nc + k] : 0.0;
+  }
+};
+
+std::vector<View> viewsOf(const NodalField& f) {
+  const int nc = static_cast<int>(f.components.size());
+  if (nc == 1 || nc == 3 || nc == 9) return {{f.name, nc, &f, -1}};
+  if (nc == 2) return {{f.name, 3, &f, -1}};
+  std::vector<View> views;
+  for (int c = 0; c < nc; ++c) views.push_back({f.name + "_" + f.components[c], 1, &f, c});
+  return views;
+}
+
+}  // namespace
+
+void writeMsh2(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants) {
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "w"));
+  if (!file) throw Error("cannot write " + path);
+  std::FILE* out = file.get();
+
+  // Entities: one per (dimension, groups of the cell), in the order of the cells.
+  const auto groupNames = mesh.cellGroupNames();
+  std::vector<std::vector<int>> groupsOfCell(mesh.cellCount());
+  for (std::size_t g = 0; g < groupNames.size(); ++g)
+    for (int c : mesh.cellGroup(groupNames[g])) {
+      auto& list = groupsOfCell[c];
+      if (std::find(list.begin(), list.end(), static_cast<int>(g)) == list.end()) list.push_back(static_cast<int>(g));
+    }
+  std::map<std::pair<int, std::vector<int>>, int> entityOf;
+  std::vector<int> entityOfCell(mesh.cellCount());
+  for (int c = 0; c < mesh.cellCount(); ++c) {
+    std::sort(groupsOfCell[c].begin(), groupsOfCell[c].end());
+    const int dim = topologicalDimension(mesh.cellType(c));
+    const int next = static_cast<int>(entityOf.size()) + 1;
+    entityOfCell[c] = entityOf.emplace(std::make_pair(dim, groupsOfCell[c]), next).first->second;
+  }
+  // Physical groups: per group and dimension, then the reserved one per dimension.
+  std::map<std::pair<int, int>, int> physicalOf;  // (dimension, group or -1) -> tag
+  std::vector<std::tuple<int, int, std::string>> names;
+  auto addPhysical = [&](int dim, int group, const std::string& name) {
+    if (physicalOf.count({dim, group})) return;
+    const int tag = static_cast<int>(names.size()) + 1;
+    physicalOf[{dim, group}] = tag;
+    names.emplace_back(dim, tag, name);
+  };
+  for (std::size_t g = 0; g < groupNames.size(); ++g)
+    for (int dim = 0; dim <= 3; ++dim)
+      for (int c : mesh.cellGroup(groupNames[g]))
+        if (topologicalDimension(mesh.cellType(c)) == dim) {
+          addPhysical(dim, static_cast<int>(g), groupNames[g]);
+          break;
+        }
+  for (int c = 0; c < mesh.cellCount(); ++c)
+    if (groupsOfCell[c].empty()) addPhysical(topologicalDimension(mesh.cellType(c)), -1, kGmshUngroupedName);
+
+  std::fprintf(out, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%zu\n", names.size());
+  for (const auto& [dim, tag, name] : names) std::fprintf(out, "%d %d \"%s\"\n", dim, tag, name.c_str());
+  std::fprintf(out, "$EndPhysicalNames\n$Nodes\n%d\n", mesh.nodeCount());
+  for (int i = 0; i < mesh.nodeCount(); ++i) {
+    const auto x = mesh.node(i);
+    std::fprintf(out, "%d %.17g %.17g %.17g\n", i + 1, x[0], x[1], x[2]);
+  }
+  std::size_t lines = 0;
+  for (const auto& groups : groupsOfCell) lines += std::max<std::size_t>(groups.size(), 1);
+  std::fprintf(out, "$EndNodes\n$Elements\n%zu\n", lines);
+  auto writeElement = [&](int tag, int c, int physical) {
+    const CellType t = mesh.cellType(c);
+    std::fprintf(out, "%d %d 2 %d %d", tag, gmshElementType(t), physical, entityOfCell[c]);
+    const auto n = mesh.cellNodes(c);
+    for (int k : fromAsterOrder(NodeConvention::Gmsh, t, std::vector<int>(n.begin(), n.end())))
+      std::fprintf(out, " %d", k + 1);
+    std::fputc('\n', out);
+  };
+  for (int c = 0; c < mesh.cellCount(); ++c) {
+    const int dim = topologicalDimension(mesh.cellType(c));
+    const int group = groupsOfCell[c].empty() ? -1 : groupsOfCell[c].front();
+    writeElement(c + 1, c, physicalOf.at({dim, group}));
+  }
+  int copy = mesh.cellCount();
+  for (int c = 0; c < mesh.cellCount(); ++c) {
+    const int dim = topologicalDimension(mesh.cellType(c));
+    for (std::size_t k = 1; k < groupsOfCell[c].size(); ++k)
+      writeElement(++copy, c, physicalOf.at({dim, groupsOfCell[c][k]}));
+  }
+  std::fprintf(out, "$EndElements\n");
+
+  // Views by name (gmsh's order), each with one block per instant.
+  std::map<std::string, std::vector<std::pair<int, View>>> steps;
+  for (std::size_t s = 0; s < instants.size(); ++s)
+    for (const auto& f : instants[s].fields)
+      for (const View& v : viewsOf(f)) steps[v.name].emplace_back(static_cast<int>(s), v);
+  for (const auto& [name, blocks] : steps)
+    for (const auto& [step, view] : blocks) {
+      std::fprintf(out, "$NodeData\n1\n\"%s\"\n1\n%.17g\n3\n%d\n%d\n%d\n", name.c_str(), instants[step].time, step,
+                   view.width, mesh.nodeCount());
+      for (int i = 0; i < mesh.nodeCount(); ++i) {
+        std::fprintf(out, "%d", i + 1);
+        for (int k = 0; k < view.width; ++k) std::fprintf(out, " %.17g", view.value(i, k));
+        std::fputc('\n', out);
+      }
+      std::fprintf(out, "$EndNodeData\n");
+    }
+  if (std::ferror(out) || std::fclose(file.release()) != 0) throw Error("cannot write " + path);
+}
+
+}  // namespace aster::mesh
