@@ -135,7 +135,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   settings.iterGlobMaxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
   settings.arret = conv.text("ARRET", "OUI") == "OUI";
   const auto& solveur = k.factor("SOLVEUR").front();
-  settings.method = solveur.text("METHODE", "UMFPACK");
+  settings.method = solveur.text("METHODE", "MULT_FRONT");
   settings.renum = solveur.text("RENUM", "AUTO");
   settings.nprec = solveur.text("STOP_SINGULIER", "OUI") == "NON" ? 0 : static_cast<int>(solveur.integer("NPREC"));
   settings.print = k.integer("INFO") >= 1;

@@ -46,12 +46,13 @@ std::string cholmodStatus(int status) {
   }
 }
 
-// Rows whose diagonal is absent or zero: Lagrange multipliers in a constrained system.
-std::vector<int> constraintSets(const SparseMatrix& A, int& count) {
+// Lagrange multipliers in a constrained system: the rows from multipliersFrom on (when
+// >= 0), and those whose diagonal is absent or zero.
+std::vector<int> constraintSets(const SparseMatrix& A, int multipliersFrom, int& count) {
   std::vector<int> set(static_cast<size_t>(A.cols()), 0);
   count = 0;
   for (int j = 0; j < A.cols(); ++j)
-    if (entryOf(A, j, j) == 0.0) {
+    if ((multipliersFrom >= 0 && j >= multipliersFrom) || entryOf(A, j, j) == 0.0) {
       set[j] = 1;
       ++count;
     }
@@ -102,7 +103,7 @@ std::vector<int> nodeNestedDissection(const SparseMatrix& M, cholmod_common& c) 
 }  // namespace
 
 CholmodSolver::CholmodSolver(Mode mode) : mode_(mode), h_(std::make_unique<Handles>()) {
-  if (mode_ == Mode::Cholesky) {
+  if (mode_ != Mode::LDLT) {
     h_->common.supernodal = CHOLMOD_SUPERNODAL;
     h_->common.final_ll = 1;
   } else {
@@ -126,13 +127,14 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   cholmod_sparse view = lowerView(M);
   cholmod_common& c = h_->common;
   int constrained = 0;
-  const std::vector<int> sets = mode_ == Mode::LDLT ? constraintSets(M, constrained) : std::vector<int>();
+  const std::vector<int> sets =
+      mode_ != Mode::Cholesky ? constraintSets(M, multipliersFrom_, constrained) : std::vector<int>();
   if (constrained > 0) {
     // Multipliers after every other unknown: constrained AMD, then analysis of that order.
     std::vector<int> sets_copy = sets;
     std::vector<int> perm(sets.size());
     if (!cholmod_camd(&view, nullptr, 0, sets_copy.data(), perm.data(), &c))
-      throw Error("CHOLMOD_LDLT: constrained ordering failed: " + cholmodStatus(c.status));
+      throw Error(name() + ": constrained ordering failed: " + cholmodStatus(c.status));
     const int savedMethods = c.nmethods;
     const int savedOrdering = c.method[0].ordering;
     c.nmethods = 1;
@@ -183,12 +185,12 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   }
   stats_.factorFlops = c.fl;  // predicted by the analysis
   stats_.factorNonzeros = static_cast<long long>(c.lnz);
-  if (mode_ == Mode::Cholesky) planMultifrontal(M);
+  if (mode_ != Mode::LDLT) planMultifrontal(M, sets);
 }
 
 // Gives the supernodal symbolic factor its numeric storage and plans the multifrontal
 // factorization on CHOLMOD's structure.
-void CholmodSolver::planMultifrontal(const SparseMatrix& A) {
+void CholmodSolver::planMultifrontal(const SparseMatrix& A, const std::vector<int>& constraintSet) {
   cholmod_factor* L = h_->factor;
   cholmod_common& c = h_->common;
   if (!L->is_super) throw Error(name() + ": the analysis did not produce a supernodal factor");
@@ -199,7 +201,13 @@ void CholmodSolver::planMultifrontal(const SparseMatrix& A) {
 #ifdef _OPENMP
   threads = omp_get_max_threads();
 #endif
-  multifrontal_ = std::make_unique<MultifrontalCholesky>(structure, A, threads);
+  std::vector<char> indefinite;  // the constraint columns, in the order of L
+  if (std::find(constraintSet.begin(), constraintSet.end(), 1) != constraintSet.end()) {
+    indefinite.resize(L->n);
+    for (size_t k = 0; k < L->n; ++k) indefinite[k] = static_cast<char>(constraintSet[structure.permutation ? structure.permutation[k] : k]);
+  }
+  multifrontal_ = std::make_unique<MultifrontalCholesky>(structure, A, threads, MultifrontalCholesky::kParallelFlops,
+                                                         indefinite);
 }
 
 void CholmodSolver::factorize(const SparseMatrix& A) {
@@ -216,6 +224,7 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
     pivots_.resize(L->n);
     const int failed = multifrontal_->factorize(M, static_cast<double*>(L->x), pivots_.data());
     L->minor = failed < 0 ? L->n : static_cast<size_t>(failed);
+    negativePivots_ = std::any_of(pivots_.begin(), pivots_.end(), [](double p) { return p < 0; });
   } else {
     cholmod_sparse view = lowerView(M);
     const int ok = cholmod_factorize(&view, L, &c);
@@ -267,7 +276,7 @@ void CholmodSolver::auditFactor(const SparseMatrix& A) const {
   const bool ll = L->is_ll;
   auditPivots(name(), static_cast<int>(L->n), nprec_, [&](int k) {
     const int i = perm ? perm[k] : k;
-    const double d = ll ? diagonal[k] * diagonal[k] : diagonal[k];
+    const double d = ll ? diagonal[k] * std::abs(diagonal[k]) : diagonal[k];  // L(k,k) S(k,k) L(k,k)
     return Pivot{d, symmetry_->diagonal(A, i), i, i};
   });
 }
@@ -286,7 +295,24 @@ void CholmodSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     // One BLAS thread: the triangular solves are bound by memory, and a second BLAS thread,
     // once woken, spins for a while after the call, taking a core from what runs next.
     ScopedBlasThreads one(1);
-    solution = cholmod_solve(CHOLMOD_A, h_->factor, &rhs, &h_->common);
+    if (!negativePivots_) {
+      solution = cholmod_solve(CHOLMOD_A, h_->factor, &rhs, &h_->common);
+    } else {
+      // P^T L^-T S L^-1 P b, one step at a time.
+      cholmod_common& c = h_->common;
+      cholmod_dense* y = cholmod_solve(CHOLMOD_P, h_->factor, &rhs, &c);
+      cholmod_dense* z = y ? cholmod_solve(CHOLMOD_L, h_->factor, y, &c) : nullptr;
+      cholmod_free_dense(&y, &c);
+      if (z) {
+        double* v = static_cast<double*>(z->x);
+        for (size_t k = 0; k < z->nrow; ++k)
+          if (pivots_[k] < 0) v[k] = -v[k];
+        y = cholmod_solve(CHOLMOD_Lt, h_->factor, z, &c);
+        cholmod_free_dense(&z, &c);
+        solution = y ? cholmod_solve(CHOLMOD_Pt, h_->factor, y, &c) : nullptr;
+        cholmod_free_dense(&y, &c);
+      }
+    }
   }
   if (!solution) throw Error(name() + ": solve failed: " + cholmodStatus(h_->common.status));
   x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solution->x), b.size());

@@ -9,6 +9,11 @@
 //   that a stiffness + constraints system [K B^T; B 0] with K positive definite and B of full
 //   rank factors stably (it is quasi-definite in that order). Other indefinite matrices may
 //   meet a zero pivot, which is reported; use UMFPACK for general symmetric indefinite systems.
+// Mode::Signed: the multifrontal factorization of Mode::Cholesky with signed pivots,
+//   P A P^T = L S L^T, S = diag(+-1), without pivoting (multifrontal_cholesky.hpp): a
+//   positive definite matrix takes exactly the Cholesky path, and a stiffness + Lagrange
+//   multipliers system (constraint rows as for Mode::LDLT) the Cholesky speed. Used by
+//   MULT_FRONT (mult_front_solver.hpp).
 #pragma once
 #include <memory>
 
@@ -19,7 +24,7 @@ namespace aster::solver {
 
 class CholmodSolver : public LinearSolver {
  public:
-  enum class Mode { Cholesky, LDLT };
+  enum class Mode { Cholesky, LDLT, Signed };
   explicit CholmodSolver(Mode mode);
   ~CholmodSolver() override;
   CholmodSolver(const CholmodSolver&) = delete;
@@ -28,10 +33,12 @@ class CholmodSolver : public LinearSolver {
   void analyze(const SparseMatrix& A) override;
   void factorize(const SparseMatrix& A) override;
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
-  std::string name() const override { return mode_ == Mode::Cholesky ? "CHOLMOD" : "CHOLMOD_LDLT"; }
+  std::string name() const override {
+    return mode_ == Mode::Cholesky ? "CHOLMOD" : mode_ == Mode::LDLT ? "CHOLMOD_LDLT" : "MULT_FRONT";
+  }
   Mode mode() const { return mode_; }
   // RENUM: AUTO (AMD; nested dissection on large matrices), AMD, METIS, SANS (natural).
-  // CHOLMOD_LDLT with constraint rows always orders them last (constrained AMD).
+  // CHOLMOD_LDLT and Signed with constraint rows always order them last (constrained AMD).
   std::vector<std::string> orderings() const override { return {"AUTO", "AMD", "METIS", "SANS"}; }
 
   // Relative tolerance of the symmetry check, per pair A(i,j), A(j,i). Default 1e-10.
@@ -39,7 +46,7 @@ class CholmodSolver : public LinearSolver {
 
  private:
   struct Handles;  // cholmod.h's structures, kept out of this header
-  void planMultifrontal(const SparseMatrix& A);
+  void planMultifrontal(const SparseMatrix& A, const std::vector<int>& constraintSet);
   void auditFactor(const SparseMatrix& A) const;
   Mode mode_;
   double symmetryTolerance_ = 1e-10;
@@ -47,7 +54,8 @@ class CholmodSolver : public LinearSolver {
   std::unique_ptr<Handles> h_;
   std::unique_ptr<SymmetryCheck> symmetry_;              // once analysed
   std::unique_ptr<MultifrontalCholesky> multifrontal_;
-  std::vector<double> pivots_;  // L(k,k) from the multifrontal factorization  // Mode::Cholesky, once analysed
+  std::vector<double> pivots_;  // L(k,k) from the multifrontal factorization, times S(k,k)
+  bool negativePivots_ = false;  // S != I: solve() applies S between the triangular solves
 };
 
 }  // namespace aster::solver

@@ -5,6 +5,7 @@
 #include "solver/cholmod_solver.hpp"
 #include "solver/eigen_lu_solver.hpp"
 #include "solver/klu_solver.hpp"
+#include "solver/mult_front_solver.hpp"
 #include "solver/umfpack_solver.hpp"
 
 namespace aster::solver {
@@ -35,10 +36,11 @@ void LinearSolver::setOrdering(const std::string& renum) {
 }
 
 std::vector<std::string> linearSolverMethods() {
-  return {"UMFPACK", "CHOLMOD", "CHOLMOD_LDLT", "KLU", "EIGEN_LU"};
+  return {"MULT_FRONT", "UMFPACK", "CHOLMOD", "CHOLMOD_LDLT", "KLU", "EIGEN_LU"};
 }
 
 std::unique_ptr<LinearSolver> makeLinearSolver(const std::string& methode) {
+  if (methode == "MULT_FRONT") return std::make_unique<MultFrontSolver>();
   if (methode == "UMFPACK") return std::make_unique<UmfpackSolver>();
   if (methode == "CHOLMOD") return std::make_unique<CholmodSolver>(CholmodSolver::Mode::Cholesky);
   if (methode == "CHOLMOD_LDLT") return std::make_unique<CholmodSolver>(CholmodSolver::Mode::LDLT);

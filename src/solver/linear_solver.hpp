@@ -66,6 +66,10 @@ class LinearSolver {
   const std::string& ordering() const { return ordering_; }
   virtual std::vector<std::string> orderings() const { return {"AUTO"}; }
 
+  // Unknowns first, first + 1, ... are Lagrange multipliers (contact): the factorizations
+  // without pivoting order them after the others, whatever their diagonal. -1: none.
+  void setMultipliersFrom(int first) { multipliersFrom_ = first; }
+
  protected:
   // Throws unless a factorization is ready and b has as many entries as the matrix has rows.
   void requireReadyToSolve(bool factorized, const Eigen::VectorXd& b) const;
@@ -73,13 +77,15 @@ class LinearSolver {
   mutable LinearSolverStatistics stats_;  // solve() is const but counts its time
   int nprec_ = 8;
   std::string ordering_ = "AUTO";
+  int multipliersFrom_ = -1;
   SparsityPattern pattern_;  // what analyze() saw, to refuse another pattern in factorize()
 };
 
 // The names makeLinearSolver accepts.
 std::vector<std::string> linearSolverMethods();
 
-// 'UMFPACK' (default of code_aster's METHODE here), 'CHOLMOD' (supernodal LL^T, symmetric
+// 'MULT_FRONT' (the default: multifrontal, signed pivots, symmetric matrices; UMFPACK takes
+// over for others, mult_front_solver.hpp), 'UMFPACK', 'CHOLMOD' (supernodal LL^T, symmetric
 // positive definite only), 'CHOLMOD_LDLT' (simplicial LDL^T without pivoting, for symmetric
 // quasi-definite systems such as stiffness + Lagrange multipliers), 'KLU', 'EIGEN_LU'.
 // Throws aster::Error on an unknown name, listing the allowed ones.

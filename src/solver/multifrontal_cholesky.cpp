@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <memory>
 #include <new>
 #include <numeric>
@@ -126,10 +127,45 @@ int parallelFrontCholesky(int parts, int width, int m, double* block) {
   return 0;
 }
 
+// A front of signed columns: its `width` pivot columns of the m x width block are
+// factorized in place, L(k,k) = sqrt|d| and sign[k] = sign d for each pivot d, the rows
+// below included (they become L's). Right-looking, one column at a time: these fronts hold
+// Lagrange multipliers, a few at the top of the tree. Returns 0, or the 1-based column of
+// a zero or non-finite pivot.
+int signedFrontFactor(int width, int m, double* block, double* sign) {
+  for (int j = 0; j < width; ++j) {
+    double* col = block + static_cast<size_t>(j) * m;
+    const double d = col[j];
+    if (d == 0.0 || !std::isfinite(d)) return j + 1;
+    const double l = std::sqrt(std::abs(d));
+    sign[j] = d > 0 ? 1.0 : -1.0;
+    col[j] = l;
+    const double scale = 1.0 / (sign[j] * l);  // L(i,j) = a(i,j) / (S(j,j) L(j,j))
+    for (int i = j + 1; i < m; ++i) col[i] *= scale;
+    for (int k = j + 1; k < width; ++k) {
+      double* target = block + static_cast<size_t>(k) * m;
+      const double f = sign[j] * col[k];
+      if (f != 0.0)
+        for (int i = k; i < m; ++i) target[i] -= col[i] * f;
+    }
+  }
+  return 0;
+}
+
+// The update matrix of a signed front, -L21 S L21^T (u x u, written whole): a dgemm with
+// the columns of L21 signed.
+void signedUpdate(int u, int width, const double* L21, int ld, const double* sign, double* update) {
+  std::vector<double> signedL21(static_cast<size_t>(u) * width);
+  for (int k = 0; k < width; ++k)
+    for (int i = 0; i < u; ++i) signedL21[i + static_cast<size_t>(k) * u] = sign[k] * L21[i + static_cast<size_t>(k) * ld];
+  const double minusOne = -1.0, zero = 0.0;
+  dgemm_("N", "T", &u, &u, &width, &minusOne, signedL21.data(), &u, L21, &ld, &zero, update, &u);
+}
+
 }  // namespace
 
 MultifrontalCholesky::MultifrontalCholesky(const SupernodalStructure& structure, const SparseMatrix& A,
-                                           int threads, double parallelFlops)
+                                           int threads, double parallelFlops, const std::vector<char>& indefinite)
     : structure_(structure) {
   const SupernodalStructure& S = structure_;
   const int n = S.n, ns = S.supernodeCount;
@@ -153,6 +189,12 @@ MultifrontalCholesky::MultifrontalCholesky(const SupernodalStructure& structure,
     flops_[s] = w * w * w / 3 + u * w * w + u * u * w + u * u;  // dpotrf, dtrsm, dsyrk, extend-add
   }
   totalFlops_ = std::accumulate(flops_.begin(), flops_.end(), 0.0);
+  signedFront_.assign(ns, 0);
+  if (!indefinite.empty()) {
+    if (static_cast<int>(indefinite.size()) != n) throw Error("multifrontal Cholesky: one flag per column expected");
+    for (int k = 0; k < n; ++k)
+      if (indefinite[k]) signedFront_[owner[k]] = 1;
+  }
   std::partial_sum(childStart_.begin(), childStart_.end(), childStart_.begin());
   children_.resize(childStart_[ns]);
   {
@@ -295,7 +337,10 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
     addIntoBlock(update, cu, relative, blockColumns(relative, cu, width), block, m);
   }
   int info = 0;
-  if (parts > 1) {
+  std::vector<double> sign(signedFront_[s] ? width : 0);
+  if (signedFront_[s]) {
+    info = signedFrontFactor(width, m, block, sign.data());
+  } else if (parts > 1) {
     info = parallelFrontCholesky(parts, width, m, block);  // the rows below too
   } else {
     dpotrf_("L", &width, block, &m, &info);
@@ -306,10 +351,13 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
   }
   if (info != 0) return k1 + std::max(info, 1) - 1;
   if (pivots)
-    for (int k = 0; k < width; ++k) pivots[k1 + k] = block[k + static_cast<size_t>(k) * m];
+    for (int k = 0; k < width; ++k)
+      pivots[k1 + k] = (sign.empty() ? 1.0 : sign[k]) * block[k + static_cast<size_t>(k) * m];
   if (u > 0) {
-    updates[s].reset(new double[static_cast<size_t>(u) * u]);  // written whole by dsyrk
-    if (parts > 1) {
+    updates[s].reset(new double[static_cast<size_t>(u) * u]);  // written whole by dsyrk or dgemm
+    if (!sign.empty()) {
+      signedUpdate(u, width, block + width, m, sign.data(), updates[s].get());
+    } else if (parts > 1) {
       parallelSyrk(parts, u, width, block + width, m, 0.0, updates[s].get(), u);
     } else {
       const double minusOne = -1.0, zero = 0.0;

@@ -16,6 +16,14 @@
 //
 // The symbolic structure (ordering, supernodes, row patterns, storage of L) is CHOLMOD's
 // supernodal analysis, so that cholmod_solve uses the factor as if CHOLMOD had computed it.
+//
+// Signed columns (stiffness + Lagrange multipliers): P A P^T = L S L^T, S = diag(+-1), the
+// sign of each pivot taken as it comes, without pivoting. Fronts holding a column flagged
+// `indefinite` are factorized column by column (L(k,k) = sqrt|d|, S(k,k) = sign d); the
+// others by dpotrf as above. With the multipliers ordered after the unknowns they
+// constrain, a system [K B^T; B -C] with K positive definite and C >= 0 meets positive
+// pivots first and then those of -(C + B K^-1 B^T), negative. Solve with
+// L y = P b, z = S y, L^T P x = z.
 #pragma once
 #include <memory>
 #include <vector>
@@ -42,12 +50,14 @@ class MultifrontalCholesky {
 
   // Plans the factorization of matrices with A's pattern, both triangles stored (the same
   // pattern the structure was computed from). threads: how many subtrees may run at once.
+  // indefinite[k] (size n, or empty): column k of P A P^T may take a negative pivot.
   MultifrontalCholesky(const SupernodalStructure& structure, const SparseMatrix& A, int threads,
-                       double parallelFlops = kParallelFlops);
+                       double parallelFlops = kParallelFlops, const std::vector<char>& indefinite = {});
 
   // L = chol(P A P^T) into values (the supernodal storage, column-major blocks at valueStart),
-  // and L(k,k) into pivots[k] (size n) when given. Returns -1, or the first column of
-  // P A P^T whose pivot was not positive (L is then partial).
+  // and L(k,k) into pivots[k] (size n) when given, negated where S(k,k) = -1. Returns -1, or
+  // the first column of P A P^T whose pivot was not positive (not finite and non-zero in an
+  // indefinite front; L is then partial).
   int factorize(const SparseMatrix& A, double* values, double* pivots = nullptr) const;
 
   // Subtrees the factorization runs concurrently (0: every supernode on the calling thread).
@@ -71,6 +81,7 @@ class MultifrontalCholesky {
   std::vector<int> entrySource_;       // index in A's values
   std::vector<int> entryTarget_;       // offset in the supernode's block of L
   std::vector<double> flops_;          // estimate per supernode
+  std::vector<char> signedFront_;      // per supernode: holds an indefinite column
   double totalFlops_ = 0;
   std::vector<std::vector<int>> threadSupernodes_;  // per thread, in elimination order
   std::vector<int> topSupernodes_;                 // after them, each front split between the threads

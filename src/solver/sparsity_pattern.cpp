@@ -53,7 +53,7 @@ namespace {
   s.precision(17);
   s << method << " needs a symmetric matrix, but A(" << i << "," << j << ") = " << entryOf(A, i, j) << " and A(" << j
     << "," << i << ") = " << entryOf(A, j, i) << "; use UMFPACK, KLU or EIGEN_LU for an unsymmetric matrix";
-  throw Error(s.str());
+  throw UnsymmetricMatrixError(s.str());
 }
 
 bool rowsSorted(const Matrix& A) {

@@ -4,7 +4,15 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace aster::solver {
+
+// What requireSymmetric and SymmetryCheck throw: a matrix that is not symmetric.
+class UnsymmetricMatrixError : public Error {
+ public:
+  using Error::Error;
+};
 
 class SparsityPattern {
  public:
@@ -28,7 +36,7 @@ const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& compressedMatrix(
 // Throws aster::Error unless A is square and non-empty.
 void requireSquare(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& A, const std::string& method);
 
-// Throws aster::Error at the first pair A(i,j), A(j,i) that differ by more than
+// Throws UnsymmetricMatrixError at the first pair A(i,j), A(j,i) that differ by more than
 // relTol * (|A(i,j)| + |A(j,i)| + sqrt(|A(i,i) A(j,j)|)) (an absent entry counts as 0; the
 // diagonals count because a_ij = 1e-17 against a_ji = 0 next to diagonals of order 1 is
 // symmetric for every purpose). A SymmetryCheck of A's pattern, made for this one call.

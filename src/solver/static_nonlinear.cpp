@@ -36,6 +36,7 @@ StaticNonlinear::StaticNonlinear(const MechanicalSystem& system, AdditionalTerms
     n_ += terms_->unknownCount();
   }
   solver_->solver = makeLinearSolver(settings_.method);
+  if (terms_) solver_->solver->setMultipliersFrom(system_.dofCount());
   solver_->solver->setOrdering(settings_.renum);
   solver_->solver->setSingularityDigits(settings_.nprec);
 }

@@ -34,7 +34,7 @@ struct NewtonSettings {
   double resiGlobRela = 1e-6;
   double resiGlobMaxi = 1e-6;
   int iterGlobMaxi = 10;
-  std::string method = "UMFPACK";
+  std::string method = "MULT_FRONT";
   std::string renum = "AUTO";  // SOLVEUR/RENUM
   int nprec = 8;               // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
   int subdPas = 4;     // SUBD_PAS

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
+#include "solver/mult_front_solver.hpp"
 #include "test_matrices.hpp"
 
 namespace aster::solver {
@@ -252,6 +254,76 @@ TEST(Cholmod, RefusesUnsymmetricMatrix) {
       EXPECT_NE(std::string(e.what()).find("symmetric"), std::string::npos) << e.what();
     }
   }
+}
+
+// Contact as StaticNonlinear assembles it: m x m Laplacian, then `constraints` multipliers
+// tying pairs of unknowns. Inactive multipliers are identity rows whose couplings are stored
+// zeros (the pattern does not change with the active set); active ones have a zero diagonal,
+// or -1/k when penalised.
+SparseMatrix contactSystem(int m, int constraints, bool active, double penalty = 0.0) {
+  Triplets t;
+  laplacian2d(m, t);
+  const int n = m * m;
+  for (int c = 0; c < constraints; ++c) {
+    const int a = (7 * c + 3) % n, b = (13 * c + 11) % n, row = n + c;
+    const double on = active ? 1.0 : 0.0;
+    for (auto [col, v] : {std::pair{a, on}, std::pair{b, -2.0 * on}}) {
+      t.emplace_back(row, col, v);
+      t.emplace_back(col, row, v);
+    }
+    t.emplace_back(row, row, !active ? 1.0 : penalty > 0 ? -1.0 / penalty : 0.0);
+  }
+  return fromTriplets(n + constraints, t);
+}
+
+TEST(MultFront, SolvesASaddlePointWithoutPivoting) {
+  MultFrontSolver solver;
+  expectSolves(solver, saddlePoint(10, 5), 1e-9);
+  EXPECT_EQ(solver.handedOver(), "");
+  EXPECT_EQ(solver.statistics().ordering, "CAMD (multipliers last)");
+}
+
+// The multipliers are identity rows when the pattern is analysed, and become constraints
+// later: named beforehand, they are ordered last and every factorization is signed.
+TEST(MultFront, NamedMultipliersStayLastWhenTheyBecomeActive) {
+  for (double penalty : {0.0, 50.0}) {
+    MultFrontSolver solver;
+    solver.setMultipliersFrom(100);
+    const SparseMatrix inactive = contactSystem(10, 5, false), active = contactSystem(10, 5, true, penalty);
+    solver.analyze(inactive);
+    for (const SparseMatrix* A : {&inactive, &active, &inactive}) {
+      const Eigen::VectorXd xKnown = knownSolution(105), b = *A * xKnown;
+      solver.factorize(*A);
+      Eigen::VectorXd x;
+      solver.solve(b, x);
+      EXPECT_LT((x - xKnown).norm() / xKnown.norm(), 1e-9) << penalty;
+    }
+    EXPECT_EQ(solver.handedOver(), "") << penalty;
+  }
+}
+
+// Not named, an active multiplier may come before the unknowns it ties: a zero pivot,
+// and UMFPACK takes over, once, with the same solution.
+TEST(MultFront, ZeroPivotHandsOverToUmfpack) {
+  MultFrontSolver solver;
+  const SparseMatrix inactive = contactSystem(10, 5, false), active = contactSystem(10, 5, true);
+  solver.analyze(inactive);
+  solver.factorize(inactive);
+  ASSERT_EQ(solver.handedOver(), "");
+  const Eigen::VectorXd xKnown = knownSolution(105), b = active * xKnown;
+  solver.factorize(active);
+  EXPECT_NE(solver.handedOver().find("without pivoting, the matrix is singular"), std::string::npos)
+      << solver.handedOver();
+  Eigen::VectorXd x;
+  solver.solve(b, x);
+  EXPECT_LT((x - xKnown).norm() / xKnown.norm(), 1e-9);
+  EXPECT_EQ(solver.statistics().factorizeCount, 3);  // the signed attempts and UMFPACK's
+}
+
+TEST(MultFront, UnsymmetricMatrixIsHandedToUmfpack) {
+  MultFrontSolver solver;
+  expectSolves(solver, convectionDiffusion(11, 2.5));
+  EXPECT_EQ(solver.handedOver(), "the matrix is not symmetric");
 }
 
 TEST(Factory, UnknownMethodListsTheAllowedOnes) {

@@ -3,9 +3,12 @@
 #include <cholmod.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "solver/cholmod_views.hpp"
 #include "test_matrices.hpp"
@@ -187,6 +190,66 @@ TEST(MultifrontalCholesky, ReportsANonPositivePivotInTheRootFront) {
   const MultifrontalCholesky plan(reference.structure(), A, 2, 0.0);
   std::vector<double> values(reference.storage());
   EXPECT_EQ(plan.factorize(A, values.data()), A.rows() - 1);
+}
+
+// L S L^T from the supernodal storage, dense.
+Eigen::MatrixXd signedProduct(const SupernodalStructure& S, const std::vector<double>& values,
+                              const std::vector<double>& pivots) {
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(S.n, S.n);
+  for (int s = 0; s < S.supernodeCount; ++s) {
+    const int m = S.rowStart[s + 1] - S.rowStart[s];
+    for (int k = S.firstColumn[s]; k < S.firstColumn[s + 1]; ++k)
+      for (int i = 0; i < m; ++i)
+        L(S.rows[S.rowStart[s] + i], k) = values[S.valueStart[s] + i + static_cast<size_t>(k - S.firstColumn[s]) * m];
+  }
+  Eigen::VectorXd sign(S.n);
+  for (int k = 0; k < S.n; ++k) sign[k] = pivots[k] < 0 ? -1.0 : 1.0;
+  return L * sign.asDiagonal() * L.transpose();
+}
+
+// Stiffness + Lagrange multipliers, the multipliers last: L S L^T reproduces A, with one
+// negative pivot per multiplier (the inertia of [K B^T; B 0], K positive definite, B of full rank).
+TEST(MultifrontalCholesky, SignedPivotsFactorASaddlePoint) {
+  const int m = 10, constraints = 5, n = m * m + constraints;
+  const SparseMatrix A = saddlePoint(m, constraints);
+  CholmodReference reference(A, CHOLMOD_NATURAL);
+  std::vector<char> indefinite(n, 0);  // in the order of L (CHOLMOD may postorder the natural one)
+  Eigen::MatrixXd PAPt(n, n);
+  const Eigen::MatrixXd dense(A);
+  for (int k = 0; k < n; ++k) {
+    indefinite[k] = reference.permutation(k) >= m * m;
+    for (int l = 0; l < n; ++l) PAPt(k, l) = dense(reference.permutation(k), reference.permutation(l));
+  }
+  for (int threads : {1, 2}) {
+    const MultifrontalCholesky plan(reference.structure(), A, threads, 0.0, indefinite);
+    std::vector<double> values(reference.storage()), pivots(n);
+    ASSERT_EQ(plan.factorize(A, values.data(), pivots.data()), -1) << threads;
+    EXPECT_EQ(std::count_if(pivots.begin(), pivots.end(), [](double p) { return p < 0; }), constraints);
+    for (int k = 0; k < n; ++k) EXPECT_EQ(pivots[k] < 0, indefinite[k] == 1) << k;
+    const Eigen::MatrixXd product = signedProduct(reference.structure(), values, pivots);
+    EXPECT_LT((product - PAPt).cwiseAbs().maxCoeff(), 1e-13) << threads;
+  }
+}
+
+// A positive definite matrix through signed fronts only: CHOLMOD's factor, all signs +.
+TEST(MultifrontalCholesky, SignedFrontsOfAPositiveDefiniteMatrixGiveCholesky) {
+  const SparseMatrix A = laplacian2d(30);
+  CholmodReference reference(A, CHOLMOD_AMD);
+  const MultifrontalCholesky plan(reference.structure(), A, 1, 0.0, std::vector<char>(A.rows(), 1));
+  std::vector<double> values(reference.storage()), pivots(A.rows());
+  ASSERT_EQ(plan.factorize(A, values.data(), pivots.data()), -1);
+  EXPECT_LT(relativeDifference(values, reference.referenceValues()), 1e-13);
+  EXPECT_GT(*std::min_element(pivots.begin(), pivots.end()), 0.0);
+}
+
+// A multiplier met before the unknowns it constrains has a zero pivot: reported.
+TEST(MultifrontalCholesky, SignedFrontsReportAZeroPivot) {
+  Triplets t{{0, 0, 0.0}, {0, 1, 1.0}, {1, 0, 1.0}, {1, 1, 2.0}};
+  const SparseMatrix A = fromTriplets(2, t);
+  CholmodReference reference(A, CHOLMOD_NATURAL);
+  const MultifrontalCholesky plan(reference.structure(), A, 1, 0.0, {1, 1});
+  std::vector<double> values(reference.storage());
+  EXPECT_EQ(plan.factorize(A, values.data()), 0);
 }
 
 // Small problems stay on the calling thread.
