@@ -129,9 +129,9 @@ int parallelFrontCholesky(int parts, int width, int m, double* block) {
 
 // A front of signed columns: its `width` pivot columns of the m x width block are
 // factorized in place, L(k,k) = sqrt|d| and sign[k] = sign d for each pivot d, the rows
-// below included (they become L's). Right-looking, one column at a time: these fronts hold
-// Lagrange multipliers, a few at the top of the tree. Returns 0, or the 1-based column of
-// a zero or non-finite pivot.
+// below included (they become L's). The diagonal block column by column (these fronts
+// hold Lagrange multipliers, a few at the top of the tree), the rows below by dtrsm:
+// A21 = L21 S L11^T. Returns 0, or the 1-based column of a zero or non-finite pivot.
 int signedFrontFactor(int width, int m, double* block, double* sign) {
   for (int j = 0; j < width; ++j) {
     double* col = block + static_cast<size_t>(j) * m;
@@ -141,13 +141,21 @@ int signedFrontFactor(int width, int m, double* block, double* sign) {
     sign[j] = d > 0 ? 1.0 : -1.0;
     col[j] = l;
     const double scale = 1.0 / (sign[j] * l);  // L(i,j) = a(i,j) / (S(j,j) L(j,j))
-    for (int i = j + 1; i < m; ++i) col[i] *= scale;
+    for (int i = j + 1; i < width; ++i) col[i] *= scale;
     for (int k = j + 1; k < width; ++k) {
       double* target = block + static_cast<size_t>(k) * m;
       const double f = sign[j] * col[k];
       if (f != 0.0)
-        for (int i = k; i < m; ++i) target[i] -= col[i] * f;
+        for (int i = k; i < width; ++i) target[i] -= col[i] * f;
     }
+  }
+  const int u = m - width;
+  if (u > 0) {
+    const double one = 1.0;
+    dtrsm_("R", "L", "T", "N", &u, &width, &one, block, &m, block + width, &m);  // L21 S
+    for (int k = 0; k < width; ++k)
+      if (sign[k] < 0)
+        for (int i = width; i < m; ++i) block[i + static_cast<size_t>(k) * m] = -block[i + static_cast<size_t>(k) * m];
   }
   return 0;
 }
