@@ -70,12 +70,20 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
     cells_.push_back({c, it->second, elements_.add(d)});
   }
   if (cells_.size() >= kParallelCells) {
-    fem::ElementDofs cellDofs;
-    for (const Cell& cell : cells_) cellDofs.add(elements_.dofs(cell.element), elements_.size(cell.element));
+    fem::ElementDofs chunkDofs;
+    std::vector<int> d;
+    for (std::size_t first = 0; first < cells_.size(); first += kChunkCells) {
+      d.clear();
+      for (std::size_t c = first; c < std::min(cells_.size(), first + kChunkCells); ++c) {
+        const int* cellDofs = elements_.dofs(cells_[c].element);
+        d.insert(d.end(), cellDofs, cellDofs + elements_.size(cells_[c].element));
+      }
+      chunkDofs.add(d);
+    }
     try {
-      cellColours_ = fem::colourElements(cellDofs, dofCount());
+      chunkColours_ = fem::colourElements(chunkDofs, dofCount());
     } catch (const Error&) {
-      cellColours_.clear();  // more than 64 colours (a node in very many cells): serial assembly
+      chunkColours_.clear();  // more than 64 colours (a node in very many chunks): serial assembly
     }
   }
   for (const auto& applied : problem_.loads) {
@@ -216,7 +224,7 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
     for (int i = 0; i < 2 * n; ++i) f[d[i]] += fe[i];
     if (values) pattern->addMatrix(cell.element, Ke, values);
   };
-  if (cellColours_.empty()) {
+  if (chunkColours_.empty()) {
     double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
     try {
       for (const Cell& cell : cells_) element(cell, X, u, fe, Ke);
@@ -231,12 +239,14 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
 #pragma omp parallel
     {
       double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
-      for (const std::vector<int>& colour : cellColours_) {
+      const int cellCount = static_cast<int>(cells_.size());
+      for (const std::vector<int>& colour : chunkColours_) {
         const int count = static_cast<int>(colour.size());
 #pragma omp for schedule(static)
         for (int k = 0; k < count; ++k) {
           try {
-            element(cells_[colour[k]], X, u, fe, Ke);
+            const int first = colour[k] * kChunkCells;
+            for (int c = first; c < std::min(cellCount, first + kChunkCells); ++c) element(cells_[c], X, u, fe, Ke);
           } catch (...) {
 #pragma omp critical(aster_assembly_failure)
             if (!failure) failure = std::current_exception();

@@ -99,9 +99,14 @@ class MechanicalSystem {
   fem::ElementDofs elements_;
   std::vector<std::unique_ptr<ElementKernel>> kernels_;
   std::vector<Cell> cells_;
-  // Indices in cells_ by colour: cells of one colour share no DOF, so each colour is
-  // assembled by all threads without races (and with the same sums for any thread count).
-  std::vector<std::vector<int>> cellColours_;
+  // Runs of kChunkCells consecutive cells (chunk k: cells_[k * kChunkCells ...]) by colour:
+  // chunks of one colour share no DOF, so each colour is assembled by all threads without
+  // races (and with the same sums for any thread count), and each chunk's cells one after
+  // the other, neighbours in the mesh's order, so that they write the same columns of the
+  // matrix while those are in cache (SVK square N = 256: 82 -> 71 ms per tangent assembly;
+  // colours of single cells made each pass touch the whole matrix).
+  static constexpr int kChunkCells = 32;
+  std::vector<std::vector<int>> chunkColours_;
   std::vector<Edge> pressureEdges_;
   // Dead loads independent of time, computed once: F(t) = factor(t) * F0.
   std::vector<Eigen::VectorXd> constantDeadLoads_;  // per problem_.loads entry, empty if time dependent
