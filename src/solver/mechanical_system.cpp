@@ -1,5 +1,7 @@
 #include "solver/mechanical_system.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <exception>
 #include <map>
 #include <tuple>
@@ -224,7 +226,9 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
     for (int i = 0; i < 2 * n; ++i) f[d[i]] += fe[i];
     if (values) pattern->addMatrix(cell.element, Ke, values);
   };
+  const std::int64_t nonZeros = K ? K->nonZeros() : 0;
   if (chunkColours_.empty()) {
+    std::fill(values, values + nonZeros, 0.0);
     double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
     try {
       for (const Cell& cell : cells_) element(cell, X, u, fe, Ke);
@@ -238,6 +242,11 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
     std::exception_ptr failure;
 #pragma omp parallel
     {
+      // K's values are zeroed by both threads, in the region the colours run in.
+      constexpr std::int64_t kSlice = 1 << 16;
+#pragma omp for schedule(static)
+      for (std::int64_t first = 0; first < nonZeros; first += kSlice)
+        std::fill(values + first, values + std::min(nonZeros, first + kSlice), 0.0);
       double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
       const int cellCount = static_cast<int>(cells_.size());
       for (const std::vector<int>& colour : chunkColours_) {

@@ -65,8 +65,9 @@ class MechanicalSystem {
   const fem::ElementDofs& elementDofs() const { return elements_; }
 
   // Fint(U) and Fext(U, t) (follower pressures act on the deformed edges); when K is given,
-  // K += dFint/dU - dFext/dU, with K on a pattern containing elementDofs()
-  // (the first elementDofs().elementCount() elements of `pattern`).
+  // K = dFint/dU - dFext/dU (every value of K set, zero outside these terms), with K on a
+  // pattern containing elementDofs() (the first elementDofs().elementCount() elements of
+  // `pattern`).
   void evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
                 const fem::AssemblyPattern* pattern, SparseMatrix* K) const;
 

@@ -57,10 +57,7 @@ void StaticNonlinear::buildPattern() {
 
 void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatrix) {
   const auto start = Clock::now();
-  if (withMatrix) {
-    fem::AssemblyPattern::clear(K_);
-    ++stats_.tangentAssemblies;
-  }
+  if (withMatrix) ++stats_.tangentAssemblies;  // evaluate() sets every value of K_
   system_.evaluate(U, t, fint_, fext_, pattern_.get(), withMatrix ? &K_ : nullptr);
   r_.setZero(n_);
   r_.head(system_.dofCount()) = fint_ - fext_;
