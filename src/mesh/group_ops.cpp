@@ -119,4 +119,13 @@ std::vector<int> orderedChainNodes(const Mesh& mesh, const std::vector<int>& cel
   return out;
 }
 
+std::vector<std::vector<int>> groupsOfEachCell(const Mesh& mesh) {
+  const auto names = mesh.cellGroupNames();
+  std::vector<std::vector<int>> groups(mesh.cellCount());
+  for (std::size_t g = 0; g < names.size(); ++g)
+    for (int c : mesh.cellGroup(names[g]))
+      if (groups[c].empty() || groups[c].back() != static_cast<int>(g)) groups[c].push_back(static_cast<int>(g));
+  return groups;
+}
+
 }  // namespace aster::mesh

@@ -17,6 +17,9 @@ std::vector<int> differenceOfCellGroups(const Mesh& mesh, const std::vector<std:
 // Nodes of the cells of the groups, each once, in order of first appearance.
 std::vector<int> nodesOfCellGroups(const Mesh& mesh, const std::vector<std::string>& groups);
 
+// For each cell, the indices in mesh.cellGroupNames() of the groups it belongs to, ascending.
+std::vector<std::vector<int>> groupsOfEachCell(const Mesh& mesh);
+
 // NOEUD_ORDO: the nodes of the segments (SEG2, SEG3, SEG4) `cells`, which must form
 // one open chain, from one end to the other, inner nodes of SEG3/SEG4 in
 // geometric order. The chain is walked from `startNode` when given (it must be

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "mesh/io/gmsh_library.hpp"
 #include "mesh/io/msh2_writer.hpp"
+#include "mesh/group_ops.hpp"
 #include "mesh/io/msh_check.hpp"
 #include "mesh/node_ordering.hpp"
 
@@ -316,12 +317,7 @@ std::string buildModel(const Mesh& mesh) {
   const std::string model = "aster";
   call(gmshLibrary().ModelAdd, model.c_str());
   const auto groupNames = mesh.cellGroupNames();
-  std::vector<std::vector<int>> groupsOfCell(mesh.cellCount());
-  for (std::size_t g = 0; g < groupNames.size(); ++g)
-    for (int c : mesh.cellGroup(groupNames[g])) {
-      auto& list = groupsOfCell[c];
-      if (std::find(list.begin(), list.end(), static_cast<int>(g)) == list.end()) list.push_back(static_cast<int>(g));
-    }
+  const std::vector<std::vector<int>> groupsOfCell = groupsOfEachCell(mesh);
   std::map<std::pair<int, std::vector<int>>, int> entityOf;
   std::vector<std::pair<int, int>> entityOrder;  // (dim, tag)
   std::map<int, std::vector<int>> cellsOfEntity;

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "mesh/io/gmsh_format.hpp"
+#include "mesh/group_ops.hpp"
 #include "mesh/io/msh_check.hpp"
 #include "mesh/node_ordering.hpp"
 
@@ -49,16 +50,10 @@ void writeMsh2(const Mesh& mesh, const std::string& path, const std::vector<Fiel
 
   // Entities: one per (dimension, groups of the cell), in the order of the cells.
   const auto groupNames = mesh.cellGroupNames();
-  std::vector<std::vector<int>> groupsOfCell(mesh.cellCount());
-  for (std::size_t g = 0; g < groupNames.size(); ++g)
-    for (int c : mesh.cellGroup(groupNames[g])) {
-      auto& list = groupsOfCell[c];
-      if (std::find(list.begin(), list.end(), static_cast<int>(g)) == list.end()) list.push_back(static_cast<int>(g));
-    }
+  const std::vector<std::vector<int>> groupsOfCell = groupsOfEachCell(mesh);
   std::map<std::pair<int, std::vector<int>>, int> entityOf;
   std::vector<int> entityOfCell(mesh.cellCount());
   for (int c = 0; c < mesh.cellCount(); ++c) {
-    std::sort(groupsOfCell[c].begin(), groupsOfCell[c].end());
     const int dim = topologicalDimension(mesh.cellType(c));
     const int next = static_cast<int>(entityOf.size()) + 1;
     entityOfCell[c] = entityOf.emplace(std::make_pair(dim, groupsOfCell[c]), next).first->second;
