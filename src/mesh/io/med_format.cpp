@@ -10,6 +10,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "mesh/io/med_library.hpp"
 #include "mesh/node_ordering.hpp"
 
 namespace aster::mesh {
@@ -61,14 +62,14 @@ class MedFile {
  public:
   MedFile(const std::string& path, med_access_mode mode) : path_(path) {
     if (mode == MED_ACC_RDONLY) checkHdf5Signature(path);
-    fid_ = MEDfileOpen(path.c_str(), mode);
+    fid_ = medLibrary().fileOpen(path.c_str(), mode);
     if (fid_ < 0 && mode == MED_ACC_RDONLY)
       throw Error(path + ": an HDF5 file that the MED library cannot open (not a MED file, or a MED version newer "
                   "than 4.1): " + kMedExpected);
     if (fid_ < 0) throw Error("cannot open the MED file '" + path + "'");
   }
   ~MedFile() {
-    if (fid_ >= 0) MEDfileClose(fid_);
+    if (fid_ >= 0) medLibrary().fileClose(fid_);
   }
   MedFile(const MedFile&) = delete;
   MedFile& operator=(const MedFile&) = delete;
@@ -140,13 +141,13 @@ void writeMesh(const MedFile& file, const Mesh& mesh, const std::string& meshNam
     if (n.size() > MED_LNAME_SIZE) throw Error("MED writer: group name '" + n + "' is longer than 80 characters");
   std::string axisNames = padded({"X", "Y", "Z"}, MED_SNAME_SIZE).substr(0, sdim * MED_SNAME_SIZE);
   std::string axisUnits(sdim * MED_SNAME_SIZE, ' ');
-  file.check(MEDmeshCr(fid, meshName.c_str(), sdim, mdim, MED_UNSTRUCTURED_MESH, mesh.title.substr(0, MED_COMMENT_SIZE).c_str(), "",
+  file.check(medLibrary().meshCr(fid, meshName.c_str(), sdim, mdim, MED_UNSTRUCTURED_MESH, mesh.title.substr(0, MED_COMMENT_SIZE).c_str(), "",
                        MED_SORT_DTIT, MED_CARTESIAN, axisNames.c_str(), axisUnits.c_str()),
              "creating mesh " + meshName);
   std::vector<med_float> xyz;
   for (int i = 0; i < mesh.nodeCount(); ++i)
     for (int d = 0; d < sdim; ++d) xyz.push_back(mesh.node(i)[d]);
-  file.check(MEDmeshNodeCoordinateWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, 0.0, MED_FULL_INTERLACE,
+  file.check(medLibrary().meshNodeCoordinateWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, 0.0, MED_FULL_INTERLACE,
                                      mesh.nodeCount(), xyz.data()),
              "writing coordinates");
   bool shortNames = true;
@@ -155,7 +156,7 @@ void writeMesh(const MedFile& file, const Mesh& mesh, const std::string& meshNam
   if (shortNames && mesh.nodeCount() > 0) {
     std::vector<std::string> names;
     for (int i = 0; i < mesh.nodeCount(); ++i) names.push_back(mesh.nodeName(i));
-    file.check(MEDmeshEntityNameWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE, mesh.nodeCount(),
+    file.check(medLibrary().meshEntityNameWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE, mesh.nodeCount(),
                                    padded(names, MED_SNAME_SIZE).c_str()),
                "writing node names");
   }
@@ -166,16 +167,16 @@ void writeMesh(const MedFile& file, const Mesh& mesh, const std::string& meshNam
   for (const auto& g : cellGroups) cellMembers.push_back(&mesh.cellGroup(g));
   const Families nodeFam = buildFamilies(mesh.nodeCount(), nodeGroups, nodeMembers, +1);
   const Families cellFam = buildFamilies(mesh.cellCount(), cellGroups, cellMembers, -1);
-  file.check(MEDfamilyCr(fid, meshName.c_str(), "FAMILLE_ZERO", 0, 0, ""), "creating family 0");
+  file.check(medLibrary().familyCr(fid, meshName.c_str(), "FAMILLE_ZERO", 0, 0, ""), "creating family 0");
   for (const auto* fam : {&nodeFam, &cellFam})
     for (const auto& [number, groups] : fam->groupsOf) {
       const std::string name = (number > 0 ? "FAM_N_" : "FAM_M_") + std::to_string(number > 0 ? number : -number);
-      file.check(MEDfamilyCr(fid, meshName.c_str(), name.c_str(), number, static_cast<med_int>(groups.size()),
+      file.check(medLibrary().familyCr(fid, meshName.c_str(), name.c_str(), number, static_cast<med_int>(groups.size()),
                              padded(groups, MED_LNAME_SIZE).c_str()),
                  "creating family " + name);
     }
   if (mesh.nodeCount() > 0)
-    file.check(MEDmeshEntityFamilyNumberWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE,
+    file.check(medLibrary().meshEntityFamilyNumberWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE,
                                            mesh.nodeCount(), nodeFam.numberOf.data()),
                "writing node families");
   // Cells, type by type.
@@ -193,14 +194,14 @@ void writeMesh(const MedFile& file, const Mesh& mesh, const std::string& meshNam
     if (fam.empty()) continue;
     const med_int count = static_cast<med_int>(fam.size());
     const std::string what = " of the " + cellTypeName(type) + " cells";
-    file.check(MEDmeshElementConnectivityWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, 0.0, MED_CELL, medType(type),
+    file.check(medLibrary().meshElementConnectivityWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, 0.0, MED_CELL, medType(type),
                                             MED_NODAL, MED_FULL_INTERLACE, count, conn.data()),
                "writing the connectivity" + what);
-    file.check(MEDmeshEntityFamilyNumberWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, medType(type), count,
+    file.check(medLibrary().meshEntityFamilyNumberWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, medType(type), count,
                                            fam.data()),
                "writing the families" + what);
     if (shortNames)
-      file.check(MEDmeshEntityNameWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, medType(type), count,
+      file.check(medLibrary().meshEntityNameWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, medType(type), count,
                                      padded(names, MED_SNAME_SIZE).c_str()),
                  "writing the names" + what);
   }
@@ -217,10 +218,10 @@ void writeFields(const MedFile& file, const Mesh& mesh, const std::vector<FieldI
                     std::to_string(mesh.nodeCount()) + " nodes x " + std::to_string(nc) + " components");
       if (f.name.size() > MED_NAME_SIZE) throw Error("MED writer: field name '" + f.name + "' is too long");
       if (created.insert(f.name).second)
-        file.check(MEDfieldCr(file.id(), f.name.c_str(), MED_FLOAT64, nc, padded(f.components, MED_SNAME_SIZE).c_str(),
+        file.check(medLibrary().fieldCr(file.id(), f.name.c_str(), MED_FLOAT64, nc, padded(f.components, MED_SNAME_SIZE).c_str(),
                               std::string(nc * MED_SNAME_SIZE, ' ').c_str(), "", meshName.c_str()),
                    "creating field " + f.name);
-      file.check(MEDfieldValueWr(file.id(), f.name.c_str(), inst.index, MED_NO_IT, inst.time, MED_NODE, MED_NONE,
+      file.check(medLibrary().fieldValueWr(file.id(), f.name.c_str(), inst.index, MED_NO_IT, inst.time, MED_NODE, MED_NONE,
                                  MED_FULL_INTERLACE, MED_ALL_CONSTITUENT, mesh.nodeCount(),
                                  reinterpret_cast<const unsigned char*>(f.values.data())),
                  "writing field " + f.name + " at step " + std::to_string(inst.index));
@@ -244,7 +245,7 @@ void writeMedResults(const Mesh& mesh, const std::string& path, const std::vecto
 Mesh readMedMesh(const std::string& path, const std::string& wanted) {
   MedFile file(path, MED_ACC_RDONLY);
   const med_idt fid = file.id();
-  const med_int meshes = MEDnMesh(fid);
+  const med_int meshes = medLibrary().nMesh(fid);
   if (meshes < 0) file.check(-1, "counting the meshes");
   if (meshes == 0) throw Error(path + ": the MED file holds no mesh (expected at least one unstructured mesh)");
   char name[MED_NAME_SIZE + 1] = {}, desc[MED_COMMENT_SIZE + 1] = {}, dtunit[MED_SNAME_SIZE + 1] = {};
@@ -255,10 +256,10 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
   std::string meshName, description;
   std::vector<std::string> available;
   for (med_int m = 1; m <= meshes; ++m) {
-    sdim = MEDmeshnAxis(fid, m);
+    sdim = medLibrary().meshnAxis(fid, m);
     if (sdim < 0) file.check(-1, "reading the mesh list");
     std::vector<char> axisName(sdim * MED_SNAME_SIZE + 1), axisUnit(sdim * MED_SNAME_SIZE + 1);
-    file.check(MEDmeshInfo(fid, m, name, &sdim, &mdim, &mtype, desc, dtunit, &sort, &nstep, &axis, axisName.data(),
+    file.check(medLibrary().meshInfo(fid, m, name, &sdim, &mdim, &mtype, desc, dtunit, &sort, &nstep, &axis, axisName.data(),
                            axisUnit.data()),
                "reading the mesh list");
     const std::string n = fixed(name, MED_NAME_SIZE);
@@ -284,29 +285,29 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
   Mesh mesh;
   mesh.title = description;
   mesh.setSpaceDimension(static_cast<int>(sdim));
-  const med_int nn = MEDmeshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE, MED_COORDINATE, MED_NO_CMODE,
+  const med_int nn = medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE, MED_COORDINATE, MED_NO_CMODE,
                                     &changed, &transformed);
   if (nn < 0) file.check(-1, "counting the nodes" + of);
   std::vector<med_float> xyz(static_cast<std::size_t>(nn) * sdim);
   if (nn > 0)
-    file.check(MEDmeshNodeCoordinateRd(fid, mn, MED_NO_DT, MED_NO_IT, MED_FULL_INTERLACE, xyz.data()),
+    file.check(medLibrary().meshNodeCoordinateRd(fid, mn, MED_NO_DT, MED_NO_IT, MED_FULL_INTERLACE, xyz.data()),
                "reading the coordinates" + of);
 
   auto readNames = [&](med_entity_type et, med_geometry_type gt, med_int count) {
     std::vector<std::string> names;
-    const med_int has = MEDmeshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, MED_NAME, MED_NO_CMODE, &changed, &transformed);
+    const med_int has = medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, MED_NAME, MED_NO_CMODE, &changed, &transformed);
     if (has <= 0) return names;
     std::vector<char> buf(static_cast<std::size_t>(count) * MED_SNAME_SIZE + 1);
-    file.check(MEDmeshEntityNameRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, buf.data()), "reading the names" + of);
+    file.check(medLibrary().meshEntityNameRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, buf.data()), "reading the names" + of);
     for (med_int k = 0; k < count; ++k) names.push_back(fixed(buf.data() + k * MED_SNAME_SIZE, MED_SNAME_SIZE));
     return names;
   };
   auto readFamilies = [&](med_entity_type et, med_geometry_type gt, med_int count) {
     std::vector<med_int> fam(count, 0);
     const med_int has =
-        MEDmeshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, MED_FAMILY_NUMBER, MED_NO_CMODE, &changed, &transformed);
+        medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, MED_FAMILY_NUMBER, MED_NO_CMODE, &changed, &transformed);
     if (has > 0 && count > 0)
-      file.check(MEDmeshEntityFamilyNumberRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, fam.data()),
+      file.check(medLibrary().meshEntityFamilyNumberRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, fam.data()),
                  "reading the families" + of);
     return fam;
   };
@@ -326,12 +327,12 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
   std::vector<med_int> cellFamily;
   std::vector<int> nodes;
   for (const auto& [mt, type] : order) {
-    const med_int count = MEDmeshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, MED_CELL, mt, MED_CONNECTIVITY, MED_NODAL,
+    const med_int count = medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, MED_CELL, mt, MED_CONNECTIVITY, MED_NODAL,
                                          &changed, &transformed);
     if (count <= 0) continue;
     const int nnc = nodeCount(type);
     std::vector<med_int> conn(static_cast<std::size_t>(count) * nnc);
-    file.check(MEDmeshElementConnectivityRd(fid, mn, MED_NO_DT, MED_NO_IT, MED_CELL, mt, MED_NODAL, MED_FULL_INTERLACE,
+    file.check(medLibrary().meshElementConnectivityRd(fid, mn, MED_NO_DT, MED_NO_IT, MED_CELL, mt, MED_NODAL, MED_FULL_INTERLACE,
                                             conn.data()),
                "reading the " + cellTypeName(type) + " cells" + of);
     const auto names = readNames(MED_CELL, mt, count);
@@ -351,16 +352,16 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
     }
   }
   // Families -> groups, in order of family definition.
-  const med_int nfam = MEDnFamily(fid, mn);
+  const med_int nfam = medLibrary().nFamily(fid, mn);
   std::map<med_int, std::vector<std::string>> groupsOfFamily;
   std::vector<std::string> nodeGroupOrder, cellGroupOrder;
   for (med_int f = 1; f <= nfam; ++f) {
-    const med_int ng = MEDnFamilyGroup(fid, mn, f);
+    const med_int ng = medLibrary().nFamilyGroup(fid, mn, f);
     if (ng < 0) file.check(-1, "reading the families" + of);
     char famName[MED_NAME_SIZE + 1] = {};
     med_int number = 0;
     std::vector<char> groups(static_cast<std::size_t>(ng) * MED_LNAME_SIZE + 1);
-    file.check(MEDfamilyInfo(fid, mn, f, famName, &number, groups.data()), "reading the families" + of);
+    file.check(medLibrary().familyInfo(fid, mn, f, famName, &number, groups.data()), "reading the families" + of);
     auto& order = number > 0 ? nodeGroupOrder : cellGroupOrder;
     for (med_int g = 0; g < ng; ++g) {
       const std::string gname = fixed(groups.data() + g * MED_LNAME_SIZE, MED_LNAME_SIZE);
@@ -383,22 +384,22 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
 NodalField readMedNodalField(const std::string& path, const std::string& fieldName, int numdt) {
   MedFile file(path, MED_ACC_RDONLY);
   const med_idt fid = file.id();
-  const med_int nc = MEDfieldnComponentByName(fid, fieldName.c_str());
+  const med_int nc = medLibrary().fieldnComponentByName(fid, fieldName.c_str());
   if (nc <= 0) throw Error(path + ": no field '" + fieldName + "' in the MED file");
   char meshName[MED_NAME_SIZE + 1] = {}, dtunit[MED_SNAME_SIZE + 1] = {};
   med_bool local;
   med_field_type type;
   med_int nsteps = 0;
   std::vector<char> comp(nc * MED_SNAME_SIZE + 1), unit(nc * MED_SNAME_SIZE + 1);
-  file.check(MEDfieldInfoByName(fid, fieldName.c_str(), meshName, &local, &type, comp.data(), unit.data(), dtunit, &nsteps),
+  file.check(medLibrary().fieldInfoByName(fid, fieldName.c_str(), meshName, &local, &type, comp.data(), unit.data(), dtunit, &nsteps),
              "reading field " + fieldName);
   NodalField f;
   f.name = fieldName;
   for (med_int k = 0; k < nc; ++k) f.components.push_back(fixed(comp.data() + k * MED_SNAME_SIZE, MED_SNAME_SIZE));
-  const med_int count = MEDfieldnValue(fid, fieldName.c_str(), numdt, MED_NO_IT, MED_NODE, MED_NONE);
+  const med_int count = medLibrary().fieldnValue(fid, fieldName.c_str(), numdt, MED_NO_IT, MED_NODE, MED_NONE);
   if (count <= 0) throw Error(path + ": field '" + fieldName + "' has no nodal values at step " + std::to_string(numdt));
   f.values.resize(static_cast<std::size_t>(count) * nc);
-  file.check(MEDfieldValueRd(fid, fieldName.c_str(), numdt, MED_NO_IT, MED_NODE, MED_NONE, MED_FULL_INTERLACE,
+  file.check(medLibrary().fieldValueRd(fid, fieldName.c_str(), numdt, MED_NO_IT, MED_NODE, MED_NONE, MED_FULL_INTERLACE,
                              MED_ALL_CONSTITUENT, reinterpret_cast<unsigned char*>(f.values.data())),
              "reading field " + fieldName);
   return f;

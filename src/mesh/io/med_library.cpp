@@ -1,0 +1,80 @@
+#include "mesh/io/med_library.hpp"
+
+#include <dlfcn.h>
+
+#include <string>
+
+#include "core/error.hpp"
+
+// The soname of the libmedC found at configure time (cmake/Dependencies.cmake).
+#ifndef ASTER_MED_LIBRARY
+#define ASTER_MED_LIBRARY "libmedC.so"
+#endif
+
+namespace aster::mesh {
+
+namespace {
+
+constexpr const char* kLibrary = ASTER_MED_LIBRARY;
+constexpr const char* kInstall = "install it with 'apt-get install libmedc11' (or libmedc-dev)";
+
+std::string lastDlError() {
+  const char* text = dlerror();
+  return text ? text : "unknown reason";
+}
+
+template <typename Function>
+Function resolve(void* library, const char* name) {
+  void* symbol = dlsym(library, name);
+  if (!symbol)
+    throw Error(std::string("the MED library ") + kLibrary + " has no function " + name + " (" + lastDlError() +
+                "): aster-lite needs MED 4; " + kInstall);
+  return reinterpret_cast<Function>(symbol);
+}
+
+MedLibrary load() {
+  // Never closed: HDF5's and MPI's handlers registered with atexit must find their code.
+  void* library = dlopen(kLibrary, RTLD_LAZY | RTLD_LOCAL);
+  if (!library)
+    throw Error(std::string("reading or writing a MED file needs the MED library ") + kLibrary +
+                ", which cannot be loaded (" + lastDlError() + "): " + kInstall);
+  MedLibrary api{};
+  // One name per function: its type (decltype) and its symbol cannot disagree.
+#define ASTER_MED_RESOLVE(name) api.name = resolve<decltype(&MED##name)>(library, "MED" #name)
+  ASTER_MED_RESOLVE(familyCr);
+  ASTER_MED_RESOLVE(familyInfo);
+  ASTER_MED_RESOLVE(fieldCr);
+  ASTER_MED_RESOLVE(fieldInfoByName);
+  ASTER_MED_RESOLVE(fieldValueRd);
+  ASTER_MED_RESOLVE(fieldValueWr);
+  ASTER_MED_RESOLVE(fieldnComponentByName);
+  ASTER_MED_RESOLVE(fieldnValue);
+  ASTER_MED_RESOLVE(fileClose);
+  ASTER_MED_RESOLVE(fileOpen);
+  ASTER_MED_RESOLVE(meshCr);
+  ASTER_MED_RESOLVE(meshElementConnectivityRd);
+  ASTER_MED_RESOLVE(meshElementConnectivityWr);
+  ASTER_MED_RESOLVE(meshEntityFamilyNumberRd);
+  ASTER_MED_RESOLVE(meshEntityFamilyNumberWr);
+  ASTER_MED_RESOLVE(meshEntityNameRd);
+  ASTER_MED_RESOLVE(meshEntityNameWr);
+  ASTER_MED_RESOLVE(meshInfo);
+  ASTER_MED_RESOLVE(meshNodeCoordinateRd);
+  ASTER_MED_RESOLVE(meshNodeCoordinateWr);
+  ASTER_MED_RESOLVE(meshnAxis);
+  ASTER_MED_RESOLVE(meshnEntity);
+  ASTER_MED_RESOLVE(nFamily);
+  ASTER_MED_RESOLVE(nFamilyGroup);
+  ASTER_MED_RESOLVE(nMesh);
+#undef ASTER_MED_RESOLVE
+  return api;
+}
+
+}  // namespace
+
+const MedLibrary& medLibrary() {
+  static const MedLibrary api = load();  // a throw leaves it unset: the next call retries
+  return api;
+}
+
+}  // namespace aster::mesh
