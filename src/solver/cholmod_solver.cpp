@@ -204,7 +204,8 @@ void CholmodSolver::planMultifrontal(const SparseMatrix& A, const std::vector<in
   std::vector<char> indefinite;  // the constraint columns, in the order of L
   if (std::find(constraintSet.begin(), constraintSet.end(), 1) != constraintSet.end()) {
     indefinite.resize(L->n);
-    for (size_t k = 0; k < L->n; ++k) indefinite[k] = static_cast<char>(constraintSet[structure.permutation ? structure.permutation[k] : k]);
+    for (size_t k = 0; k < L->n; ++k)
+      indefinite[k] = static_cast<char>(constraintSet[structure.permutation ? structure.permutation[k] : k]);
   }
   multifrontal_ = std::make_unique<MultifrontalCholesky>(structure, A, threads, MultifrontalCholesky::kParallelFlops,
                                                          indefinite);
@@ -244,6 +245,8 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
                                           "(missing Dirichlet conditions?)",
                                 col, col);
     }
+    if (mode_ == Mode::Signed)  // dpotrf stops at a negative pivot too, outside the multipliers' fronts
+      throwZeroPivot(name(), col, col, " (or negative, where no Lagrange multiplier is: an indefinite stiffness)");
     throwZeroPivot(name(), col, col);
   }
   auditFactor(M);

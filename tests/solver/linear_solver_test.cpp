@@ -320,6 +320,14 @@ TEST(MultFront, ZeroPivotHandsOverToUmfpack) {
   EXPECT_EQ(solver.statistics().factorizeCount, 3);  // the signed attempts and UMFPACK's
 }
 
+// An indefinite stiffness (no multiplier): dpotrf stops at a negative pivot, UMFPACK solves.
+TEST(MultFront, IndefiniteStiffnessIsHandedToUmfpack) {
+  MultFrontSolver solver;
+  expectSolves(solver, laplacian2d(9, -3.3), 1e-9);
+  EXPECT_NE(solver.handedOver().find("or negative, where no Lagrange multiplier is"), std::string::npos)
+      << solver.handedOver();
+}
+
 TEST(MultFront, UnsymmetricMatrixIsHandedToUmfpack) {
   MultFrontSolver solver;
   expectSolves(solver, convectionDiffusion(11, 2.5));
