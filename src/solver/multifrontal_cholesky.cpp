@@ -154,8 +154,10 @@ int signedFrontFactor(int width, int m, double* block, double* sign) {
     const double one = 1.0;
     dtrsm_("R", "L", "T", "N", &u, &width, &one, block, &m, block + width, &m);  // L21 S
     for (int k = 0; k < width; ++k)
-      if (sign[k] < 0)
-        for (int i = width; i < m; ++i) block[i + static_cast<size_t>(k) * m] = -block[i + static_cast<size_t>(k) * m];
+      if (sign[k] < 0) {
+        double* column = block + static_cast<size_t>(k) * m;
+        for (int i = width; i < m; ++i) column[i] = -column[i];
+      }
   }
   return 0;
 }
@@ -165,7 +167,8 @@ int signedFrontFactor(int width, int m, double* block, double* sign) {
 void signedUpdate(int u, int width, const double* L21, int ld, const double* sign, double* update) {
   std::vector<double> signedL21(static_cast<size_t>(u) * width);
   for (int k = 0; k < width; ++k)
-    for (int i = 0; i < u; ++i) signedL21[i + static_cast<size_t>(k) * u] = sign[k] * L21[i + static_cast<size_t>(k) * ld];
+    for (int i = 0; i < u; ++i)
+      signedL21[i + static_cast<size_t>(k) * u] = sign[k] * L21[i + static_cast<size_t>(k) * ld];
   const double minusOne = -1.0, zero = 0.0;
   dgemm_("N", "T", &u, &u, &width, &minusOne, signedL21.data(), &u, L21, &ld, &zero, update, &u);
 }
