@@ -24,17 +24,24 @@ add_library(lua54 INTERFACE)
 target_include_directories(lua54 INTERFACE ${LUA_INCLUDE_DIR})
 target_link_libraries(lua54 INTERFACE ${LUA_LIB} m dl)
 
+# OUT: the soname of the shared library LIB (what dlopen must be given), DEFAULT when
+# objdump does not tell it.
+function(aster_soname OUT LIB DEFAULT)
+  set(soname ${DEFAULT})
+  execute_process(COMMAND ${CMAKE_OBJDUMP} -p ${LIB} OUTPUT_VARIABLE headers ERROR_QUIET)
+  if(headers MATCHES "SONAME +([^ \n]+)")
+    set(soname ${CMAKE_MATCH_1})
+  endif()
+  set(${OUT} ${soname} PARENT_SCOPE)
+endfunction()
+
 # aster-lite loads libgmsh on first use (src/mesh/io/gmsh_library.cpp), by the
 # soname of the library found here: gmshapi has the headers and dlopen only.
 # gmshlib links the library, for tests calling gmsh's C++ API themselves.
 find_path(GMSH_INCLUDE_DIR gmshc.h)
 find_library(GMSH_LIB gmsh)
 if(GMSH_INCLUDE_DIR AND GMSH_LIB)
-  set(GMSH_SONAME libgmsh.so)
-  execute_process(COMMAND ${CMAKE_OBJDUMP} -p ${GMSH_LIB} OUTPUT_VARIABLE gmsh_headers ERROR_QUIET)
-  if(gmsh_headers MATCHES "SONAME +([^ \n]+)")
-    set(GMSH_SONAME ${CMAKE_MATCH_1})
-  endif()
+  aster_soname(GMSH_SONAME ${GMSH_LIB} libgmsh.so)
   message(STATUS "gmsh, loaded on first use: ${GMSH_SONAME}")
   add_library(gmshapi INTERFACE)
   target_include_directories(gmshapi INTERFACE ${GMSH_INCLUDE_DIR})
@@ -50,11 +57,7 @@ find_path(MPI_C_INCLUDE_DIR mpi.h PATHS /usr/lib/x86_64-linux-gnu/openmpi/includ
 # MED too is loaded on first use (src/mesh/io/med_library.cpp), by its soname: medapi has
 # the headers and dlopen only; medfile links the library, for tests calling MED themselves.
 if(MED_INCLUDE_DIR AND MED_LIB AND HDF5_MPI_INCLUDE_DIR AND MPI_C_INCLUDE_DIR)
-  set(MED_SONAME libmedC.so)
-  execute_process(COMMAND ${CMAKE_OBJDUMP} -p ${MED_LIB} OUTPUT_VARIABLE med_headers ERROR_QUIET)
-  if(med_headers MATCHES "SONAME +([^ \n]+)")
-    set(MED_SONAME ${CMAKE_MATCH_1})
-  endif()
+  aster_soname(MED_SONAME ${MED_LIB} libmedC.so)
   message(STATUS "MED, loaded on first use: ${MED_SONAME}")
   add_library(medapi INTERFACE)
   target_include_directories(medapi INTERFACE ${MED_INCLUDE_DIR} ${HDF5_MPI_INCLUDE_DIR} ${MPI_C_INCLUDE_DIR})

@@ -1,10 +1,6 @@
 #include "mesh/io/gmsh_library.hpp"
 
-#include <dlfcn.h>
-
-#include <string>
-
-#include "core/error.hpp"
+#include "mesh/io/loaded_library.hpp"
 
 // The soname of the libgmsh found at configure time (cmake/Dependencies.cmake):
 // the functions' types come from that version's gmshc.h.
@@ -16,35 +12,13 @@ namespace aster::mesh {
 
 namespace {
 
-constexpr const char* kLibrary = ASTER_GMSH_LIBRARY;
-constexpr const char* kInstall = "install it with 'apt-get install libgmsh4.8' (or libgmsh-dev)";
-
-std::string lastDlError() {
-  const char* text = dlerror();
-  return text ? text : "unknown reason";
-}
-
-template <typename Function>
-Function resolve(void* library, const char* name) {
-  void* symbol = dlsym(library, name);
-  if (!symbol)
-    throw Error(std::string("the gmsh library ") + kLibrary + " has no function " + name + " (" + lastDlError() +
-                "): aster-lite needs the C API of gmsh " GMSH_API_VERSION "; " + kInstall);
-  return reinterpret_cast<Function>(symbol);
-}
-
 GmshLibrary load() {
-  // RTLD_LOCAL: gmsh's ~120 libraries stay out of the global symbol scope.
-  // The handle is never closed, not even at exit (no dlclose): gmsh's static
-  // destructors then run at exit as a linked library's would, with nothing of
-  // gmsh or of its libraries unloaded under them.
-  void* library = dlopen(kLibrary, RTLD_LAZY | RTLD_LOCAL);
-  if (!library)
-    throw Error(std::string("reading or writing a GMSH file needs the gmsh library ") + kLibrary +
-                ", which cannot be loaded (" + lastDlError() + "): " + kInstall);
+  const LibraryToLoad library{ASTER_GMSH_LIBRARY, "gmsh", "reading or writing a GMSH file", std::string("the C API of gmsh ") + GMSH_API_VERSION,
+                              "install it with 'apt-get install libgmsh4.8' (or libgmsh-dev)"};
+  void* handle = openLibrary(library);
   GmshLibrary api{};
   // One name per function: its type (decltype) and its symbol cannot disagree.
-#define ASTER_GMSH_RESOLVE(name) api.name = resolve<decltype(&gmsh##name)>(library, "gmsh" #name)
+#define ASTER_GMSH_RESOLVE(name) api.name = libraryFunction<decltype(&gmsh##name)>(handle, library, "gmsh" #name)
   ASTER_GMSH_RESOLVE(Free);
   ASTER_GMSH_RESOLVE(Initialize);
   ASTER_GMSH_RESOLVE(Finalize);

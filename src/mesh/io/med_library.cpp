@@ -1,10 +1,6 @@
 #include "mesh/io/med_library.hpp"
 
-#include <dlfcn.h>
-
-#include <string>
-
-#include "core/error.hpp"
+#include "mesh/io/loaded_library.hpp"
 
 // The soname of the libmedC found at configure time (cmake/Dependencies.cmake).
 #ifndef ASTER_MED_LIBRARY
@@ -15,32 +11,13 @@ namespace aster::mesh {
 
 namespace {
 
-constexpr const char* kLibrary = ASTER_MED_LIBRARY;
-constexpr const char* kInstall = "install it with 'apt-get install libmedc11' (or libmedc-dev)";
-
-std::string lastDlError() {
-  const char* text = dlerror();
-  return text ? text : "unknown reason";
-}
-
-template <typename Function>
-Function resolve(void* library, const char* name) {
-  void* symbol = dlsym(library, name);
-  if (!symbol)
-    throw Error(std::string("the MED library ") + kLibrary + " has no function " + name + " (" + lastDlError() +
-                "): aster-lite needs MED 4; " + kInstall);
-  return reinterpret_cast<Function>(symbol);
-}
-
 MedLibrary load() {
-  // Never closed: HDF5's and MPI's handlers registered with atexit must find their code.
-  void* library = dlopen(kLibrary, RTLD_LAZY | RTLD_LOCAL);
-  if (!library)
-    throw Error(std::string("reading or writing a MED file needs the MED library ") + kLibrary +
-                ", which cannot be loaded (" + lastDlError() + "): " + kInstall);
+  const LibraryToLoad library{ASTER_MED_LIBRARY, "MED", "reading or writing a MED file", "MED 4",
+                              "install it with 'apt-get install libmedc11' (or libmedc-dev)"};
+  void* handle = openLibrary(library);
   MedLibrary api{};
   // One name per function: its type (decltype) and its symbol cannot disagree.
-#define ASTER_MED_RESOLVE(name) api.name = resolve<decltype(&MED##name)>(library, "MED" #name)
+#define ASTER_MED_RESOLVE(name) api.name = libraryFunction<decltype(&MED##name)>(handle, library, "MED" #name)
   ASTER_MED_RESOLVE(familyCr);
   ASTER_MED_RESOLVE(familyInfo);
   ASTER_MED_RESOLVE(fieldCr);
