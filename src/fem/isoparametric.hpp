@@ -33,6 +33,10 @@ inline Eigen::Vector2d mapPoint(const NodeCoords<T>& X, const typename Cell<T>::
   return X.transpose() * Cell<T>::values(xi);
 }
 
+// Throws aster::Error for a singular map; out of line so that element code
+// compiled for another instruction set holds no copy of the exception's code.
+[[noreturn]] void throwSingularMap(const char* cell, double det);
+
 // Throws when the map is singular or folds (detJ <= 0): a degenerate cell or one
 // whose nodes are numbered clockwise.
 template <CellType T>
@@ -41,9 +45,7 @@ inline Jacobian2 jacobian(const NodeCoords<T>& X, const typename Cell<T>::Gradie
   Jacobian2 j;
   j.J = X.transpose() * dN;
   j.det = j.J.determinant();
-  if (!(j.det > 0))
-    throw Error(std::string("isoparametric map of a ") + cellName(T) + " cell is singular or inverted (detJ = " +
-                std::to_string(j.det) + "): degenerate cell or nodes not counterclockwise");
+  if (!(j.det > 0)) throwSingularMap(cellName(T), j.det);
   j.inverse << j.J(1, 1), -j.J(0, 1), -j.J(1, 0), j.J(0, 0);
   j.inverse /= j.det;
   return j;
