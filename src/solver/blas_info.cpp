@@ -7,6 +7,7 @@
 
 #include <cctype>
 #include <cstdint>
+#include <string>
 
 namespace aster::solver {
 
@@ -65,6 +66,7 @@ void selectBlasKernels(char** argv) {
   if (!choice) return;
   setenv("OPENBLAS_CORETYPE", choice, 1);
   setenv("ASTER_BLAS_SELECTED", "1", 1);  // never loop
+  startBlasOnOneThread();
   execv("/proc/self/exe", argv);
   // exec failed: go on with the generic kernels
 #else
@@ -91,11 +93,30 @@ const BlasThreadCount& blasThreads() {
 }
 }  // namespace
 
-void chooseBlasThreads(int unknowns) {
-  if (getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS")) return;
+// Set by startBlasOnOneThread for the re-executed process: the count OpenBLAS chose before.
+constexpr const char* kChosenThreads = "ASTER_BLAS_THREADS";
+
+bool userChoseBlasThreads() {
+  return (getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS")) && !getenv(kChosenThreads);
+}
+
+void startBlasOnOneThread() {
   const BlasThreadCount& blas = blasThreads();
-  if (!blas.get) return;
-  static const int all = blas.get();  // what OpenBLAS chose at start-up, before any change
+  if (!blas.get || userChoseBlasThreads() || getenv(kChosenThreads)) return;
+  setenv(kChosenThreads, std::to_string(blas.get()).c_str(), 1);
+  setenv("OPENBLAS_NUM_THREADS", "1", 1);
+}
+
+void chooseBlasThreads(int unknowns) {
+  const BlasThreadCount& blas = blasThreads();
+  if (!blas.get || userChoseBlasThreads()) return;
+  // What OpenBLAS chose at start-up, before any change (in the first process when this one
+  // was re-executed with one thread).
+  static const int all = [&] {
+    const char* chosen = getenv(kChosenThreads);
+    const int n = chosen ? std::atoi(chosen) : 0;
+    return n > 0 ? n : blas.get();
+  }();
   blas.set(unknowns < kSmallSystem ? 1 : all);
 }
 

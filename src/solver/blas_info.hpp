@@ -33,6 +33,16 @@ void selectBlasKernels(char** argv);
 inline constexpr int kSmallSystem = 10000;
 void chooseBlasThreads(int unknowns);
 
+// OpenBLAS creates its worker threads when it is loaded, and an idle worker spins
+// (sched_yield) for a while before it sleeps: on two cores it slows whatever the
+// program does first (loading libmedC in ssnp150a: 32 -> 19 ms). The default
+// solver needs no BLAS thread (multifrontal_cholesky.cpp), so a process about to
+// re-execute itself (selectBlasKernels, selectHugePages) calls this: the new
+// process starts OpenBLAS on one thread (OPENBLAS_NUM_THREADS=1) and
+// chooseBlasThreads still gives large systems the count OpenBLAS had chosen,
+// creating the workers then. Nothing when the user chose the count.
+void startBlasOnOneThread();
+
 // While alive, OpenBLAS runs every call on the calling thread with `threads` threads
 // (openblas_set_num_threads; the previous count is restored after). The multifrontal
 // factorization runs independent subtrees on separate threads, each with a one-thread

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include "solver/blas_info.hpp"
+
 namespace aster::solver {
 
 void keepFactorWorkspaces() {
@@ -26,6 +28,7 @@ void selectHugePages(char** argv) {
   if (modes.find("[madvise]") == std::string::npos) return;  // always: nothing to ask; never: no use
   tunables += std::string(tunables.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
   setenv("GLIBC_TUNABLES", tunables.c_str(), 1);
+  startBlasOnOneThread();
   execv("/proc/self/exe", argv);
   // exec failed: go on with 4 KiB pages
 }
