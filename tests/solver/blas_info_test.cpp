@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "solver/linear_solver.hpp"
 
 namespace aster::solver {
@@ -33,6 +35,55 @@ TEST(BlasInfo, ScopedBlasThreadsRestoresTheCount) {
     EXPECT_EQ(blasInUse().threads, 1);
   }
   EXPECT_EQ(blasInUse().threads, before);
+}
+
+void clearThreadVariables() {
+  for (const char* v : {"OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "ASTER_BLAS_THREADS"}) unsetenv(v);
+}
+
+// Before re-executing: one thread for the new process, the count OpenBLAS chose kept aside.
+TEST(BlasInfo, StartOnOneThreadSetsTheNewProcessVariables) {
+  if (blasInUse().openblasConfig.empty()) GTEST_SKIP() << "not OpenBLAS";
+  clearThreadVariables();
+  const int chosen = blasInUse().threads;
+  startBlasOnOneThread();
+  ASSERT_NE(getenv("OPENBLAS_NUM_THREADS"), nullptr);
+  EXPECT_STREQ(getenv("OPENBLAS_NUM_THREADS"), "1");
+  ASSERT_NE(getenv("ASTER_BLAS_THREADS"), nullptr);
+  EXPECT_EQ(std::atoi(getenv("ASTER_BLAS_THREADS")), chosen);
+  clearThreadVariables();
+}
+
+TEST(BlasInfo, StartOnOneThreadLeavesTheUsersCount) {
+  clearThreadVariables();
+  setenv("OPENBLAS_NUM_THREADS", "3", 1);
+  startBlasOnOneThread();
+  EXPECT_STREQ(getenv("OPENBLAS_NUM_THREADS"), "3");
+  EXPECT_EQ(getenv("ASTER_BLAS_THREADS"), nullptr);
+  clearThreadVariables();
+}
+
+// The re-executed process: OpenBLAS on one thread, large systems get the count chosen before.
+TEST(BlasInfo, LargeSystemsGetTheCountChosenBeforeTheReexecution) {
+  if (blasInUse().openblasConfig.empty()) GTEST_SKIP() << "not OpenBLAS";
+  clearThreadVariables();
+  setenv("OPENBLAS_NUM_THREADS", "1", 1);
+  setenv("ASTER_BLAS_THREADS", "3", 1);  // not the count this process started with
+  chooseBlasThreads(kSmallSystem);
+  EXPECT_EQ(blasInUse().threads, 3);
+  chooseBlasThreads(kSmallSystem - 1);
+  EXPECT_EQ(blasInUse().threads, 1);
+  clearThreadVariables();
+}
+
+TEST(BlasInfo, ChooseLeavesTheUsersCount) {
+  if (blasInUse().openblasConfig.empty()) GTEST_SKIP() << "not OpenBLAS";
+  clearThreadVariables();
+  ScopedBlasThreads two(2);
+  setenv("OMP_NUM_THREADS", "2", 1);
+  chooseBlasThreads(1);
+  EXPECT_EQ(blasInUse().threads, 2);
+  clearThreadVariables();
 }
 
 }  // namespace
