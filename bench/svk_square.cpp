@@ -142,8 +142,12 @@ int main(int argc, char** argv) {
   const solver::BlasInfo blas = solver::blasInUse();
   std::printf("%s BLAS: %s (%s, core %s, %d threads)\n", csv ? "#" : "", blas.library.c_str(),
               blas.openblasConfig.empty() ? "-" : blas.openblasConfig.c_str(),
-              blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(), blas.threads);
-  if (dgemmSize > 0) std::printf("%s dgemm n=%d: %.1f GFLOP/s\n", csv ? "#" : "", dgemmSize, dgemmRate(dgemmSize));
+              blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(), solver::startupBlasThreads());
+  if (dgemmSize > 0) {
+    // Every thread OpenBLAS would use, although the process started it on one.
+    const solver::ScopedBlasThreads all(solver::startupBlasThreads());
+    std::printf("%s dgemm n=%d: %.1f GFLOP/s\n", csv ? "#" : "", dgemmSize, dgemmRate(dgemmSize));
+  }
   if (csv) {
     std::printf("N,dofs,newton,total_s,assembly_s,solve_s,analyze_s,factorize_s,factorizations,factor_flops,"
                 "factor_gflops,later_gflops,peak_mib,rx,ry,solver,ordering\n");

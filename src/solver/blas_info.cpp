@@ -107,17 +107,22 @@ void startBlasOnOneThread() {
   setenv("OPENBLAS_NUM_THREADS", "1", 1);
 }
 
-void chooseBlasThreads(int unknowns) {
+int startupBlasThreads() {
   const BlasThreadCount& blas = blasThreads();
-  if (!blas.get || userChoseBlasThreads()) return;
-  // What OpenBLAS chose at start-up, before any change (in the first process when this one
-  // was re-executed with one thread).
-  static const int all = [&] {
+  if (!blas.get) return 1;
+  // Read once, before any change to the count.
+  static const int count = [&] {
     const char* chosen = getenv(kChosenThreads);
     const int n = chosen ? std::atoi(chosen) : 0;
     return n > 0 ? n : blas.get();
   }();
-  blas.set(unknowns < kSmallSystem ? 1 : all);
+  return count;
+}
+
+void chooseBlasThreads(int unknowns) {
+  const BlasThreadCount& blas = blasThreads();
+  if (!blas.get || userChoseBlasThreads()) return;
+  blas.set(unknowns < kSmallSystem ? 1 : startupBlasThreads());
 }
 
 ScopedBlasThreads::ScopedBlasThreads(int threads) {

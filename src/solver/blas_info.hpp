@@ -43,6 +43,10 @@ void chooseBlasThreads(int unknowns);
 // creating the workers then. Nothing when the user chose the count.
 void startBlasOnOneThread();
 
+// The count OpenBLAS chose when the program was started (in the first process when
+// startBlasOnOneThread re-executed it): all cores unless the user set it; 1 for another BLAS.
+int startupBlasThreads();
+
 // While alive, OpenBLAS runs every call on the calling thread with `threads` threads
 // (openblas_set_num_threads; the previous count is restored after). The multifrontal
 // factorization runs independent subtrees on separate threads, each with a one-thread
