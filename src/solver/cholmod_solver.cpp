@@ -217,7 +217,7 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
   const SparseMatrix& M = compressedMatrix(A, storage);
   pattern_.requireSame(M, name());
   factorized_ = false;
-  symmetry_->require(M, symmetryTolerance_, name());
+  if (!symmetricByConstruction_) symmetry_->require(M, symmetryTolerance_, name());
   cholmod_common& c = h_->common;
   cholmod_factor* L = h_->factor;
   const auto start = std::chrono::steady_clock::now();

@@ -71,6 +71,11 @@ class MechanicalSystem {
   void evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
                 const fem::AssemblyPattern* pattern, SparseMatrix* K) const;
 
+  // K is exactly symmetric whatever U: every element matrix is (its kernel mirrors one
+  // triangle), and the assembly adds the same element values in the same order into (i, j)
+  // and (j, i). Only follower pressures add an unsymmetric term.
+  bool symmetricTangent() const { return pressureEdges_.empty(); }
+
   // Imposed displacements at t: (dof, value), each DOF once (the last load wins).
   std::vector<std::pair<int, double>> imposed(double t) const;
 

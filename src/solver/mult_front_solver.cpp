@@ -21,6 +21,7 @@ void MultFrontSolver::analyze(const SparseMatrix& A) {
     signed_->setOrdering(ordering_);
     signed_->setSingularityDigits(nprec_);
     signed_->setMultipliersFrom(multipliersFrom_);
+    signed_->setSymmetricByConstruction(symmetricByConstruction_);
     signed_->analyze(A);
   }
   gatherStatistics();

@@ -39,6 +39,8 @@ StaticNonlinear::StaticNonlinear(const MechanicalSystem& system, AdditionalTerms
   if (terms_) solver_->solver->setMultipliersFrom(system_.dofCount());
   solver_->solver->setOrdering(settings_.renum);
   solver_->solver->setSingularityDigits(settings_.nprec);
+  // Contact's terms keep the check: their symmetry is not exact by construction.
+  solver_->solver->setSymmetricByConstruction(!terms_ && system_.symmetricTangent());
 }
 
 void StaticNonlinear::buildPattern() {
