@@ -123,7 +123,7 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   multifrontal_.reset();
   if (h_->factor) cholmod_free_factor(&h_->factor, &h_->common);
   pattern_.record(M);
-  symmetry_ = std::make_unique<SymmetryCheck>(M);
+  symmetry_ = std::make_unique<SymmetryCheck>(M, !symmetricByConstruction_);
   cholmod_sparse view = lowerView(M);
   cholmod_common& c = h_->common;
   int constrained = 0;

@@ -80,13 +80,19 @@ void requireSymmetric(const Matrix& A, double relTol, const std::string& method)
 // One pass over the entries without building A^T: column j's entries below the diagonal,
 // (i, j) with i > j, are met for increasing j, so their mirrors (j, i) come in row order in
 // column i; a cursor per column walks them. Upper entries the cursor skips have no mirror.
-SymmetryCheck::SymmetryCheck(const Matrix& A) {
+SymmetryCheck::SymmetryCheck(const Matrix& A, bool mirrors) : mirrorsRecorded_(mirrors) {
   sorted_ = A.isCompressed() && rowsSorted(A);
   if (!sorted_) return;
   const int n = static_cast<int>(A.cols());
   const int* p = A.outerIndexPtr();
   const int* r = A.innerIndexPtr();
   diagonal_.assign(n, -1);
+  if (!mirrors) {
+    for (int j = 0; j < n; ++j)
+      for (int k = p[j]; k < p[j + 1]; ++k)
+        if (r[k] == j) diagonal_[j] = k;
+    return;
+  }
   std::vector<int> cursor(p, p + n);
   for (int j = 0; j < n; ++j)
     for (int k = p[j]; k < p[j + 1]; ++k) {
@@ -105,6 +111,7 @@ SymmetryCheck::SymmetryCheck(const Matrix& A) {
 }
 
 void SymmetryCheck::require(const Matrix& A, double relTol, const std::string& method) const {
+  if (!mirrorsRecorded_) throw Error("internal error: " + method + " checks a symmetry it was told to trust");
   if (!sorted_) {
     requireSymmetric(A, relTol, method);
     return;

@@ -50,7 +50,9 @@ class SymmetryCheck {
  public:
   // Records A's pattern (compressed; rows sorted in each column, or every check falls back
   // to requireSymmetric).
-  explicit SymmetryCheck(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& A);
+  // With mirrors false, only the diagonal (for diagonal()): the caller vouches for the
+  // symmetry, and require() throws aster::Error.
+  explicit SymmetryCheck(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& A, bool mirrors = true);
   // Same test and message as requireSymmetric; A has the recorded pattern.
   void require(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& A, double relTol,
                const std::string& method) const;
@@ -61,6 +63,7 @@ class SymmetryCheck {
 
  private:
   bool sorted_ = true;
+  bool mirrorsRecorded_ = true;
   std::vector<int> diagonal_;  // index of A(j,j) in the values, -1 when absent
   std::vector<std::pair<int, int>> mirrors_;  // indices of A(i,j) and A(j,i), i > j
   std::vector<int> alone_;     // off-diagonal entries whose mirror is not stored

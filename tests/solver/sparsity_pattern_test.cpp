@@ -27,6 +27,14 @@ TEST(SymmetryCheck, AcceptsASymmetricMatrixAndReadsItsDiagonal) {
   for (int j = 0; j < A.cols(); ++j) EXPECT_EQ(check.diagonal(A, j), 4.5);
 }
 
+// When the caller vouches for the symmetry: the diagonal only, and no check to call.
+TEST(SymmetryCheck, DiagonalAloneWhenTheSymmetryIsTrusted) {
+  const SparseMatrix A = laplacian2d(7, 0.5);
+  const SymmetryCheck check(A, false);
+  for (int j = 0; j < A.cols(); ++j) EXPECT_EQ(check.diagonal(A, j), 4.5);
+  EXPECT_NE(failureOf(check, A).find("internal error"), std::string::npos);
+}
+
 TEST(SymmetryCheck, NamesAnUnsymmetricPair) {
   SparseMatrix A = laplacian2d(5);
   const SymmetryCheck check(A);
