@@ -91,7 +91,6 @@ const BlasThreadCount& blasThreads() {
   static const BlasThreadCount count;
   return count;
 }
-}  // namespace
 
 // Set by startBlasOnOneThread for the re-executed process: the count OpenBLAS chose before.
 constexpr const char* kChosenThreads = "ASTER_BLAS_THREADS";
@@ -99,6 +98,7 @@ constexpr const char* kChosenThreads = "ASTER_BLAS_THREADS";
 bool userChoseBlasThreads() {
   return (getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS")) && !getenv(kChosenThreads);
 }
+}  // namespace
 
 void startBlasOnOneThread() {
   const BlasThreadCount& blas = blasThreads();
