@@ -55,6 +55,7 @@ class ContactBase : public AdditionalTerms {
             listed[n] = 1;
             slaveNodes_.push_back({n, static_cast<int>(z)});
           }
+      scales_.push_back(stiffnessScale(zones_[z]));
     }
   }
   void setFirstUnknown(int first) override { first_ = first; }
@@ -65,6 +66,29 @@ class ContactBase : public AdditionalTerms {
     int zone;
   };
 
+  // S of a zone (contact_terms.hpp): the largest Young's modulus of the model's
+  // 2D cells with a node on its slave or master cells, else of all the model's
+  // cells, else 1.
+  double stiffnessScale(const ContactZone& zone) const {
+    const auto& materials = system_.problem().materials;
+    if (!materials) return 1.0;
+    std::vector<char> onZone(mesh_.nodeCount(), 0);
+    for (const auto* cells : {&zone.slaveCells, &zone.masterCells})
+      for (int c : *cells)
+        for (int n : mesh_.cellNodes(c)) onZone[n] = 1;
+    double near = 0, all = 0;
+    for (int c : system_.model().cells()) {
+      const model::ElasticMaterial* m = materials->at(c);
+      if (!m || !(m->E > 0) || !std::isfinite(m->E)) continue;
+      all = std::max(all, m->E);
+      for (int n : mesh_.cellNodes(c))
+        if (onZone[n]) {
+          near = std::max(near, m->E);
+          break;
+        }
+    }
+    return near > 0 ? near : all > 0 ? all : 1.0;
+  }
   void checkSegment(int c, const char* role) const {
     const auto t = mesh_.cellType(c);
     if (t != mesh::CellType::SEG2 && t != mesh::CellType::SEG3)
@@ -143,6 +167,7 @@ class ContactBase : public AdditionalTerms {
   std::vector<contact::ProjectionOptions> projections_;  // per zone
   std::vector<std::vector<char>> excluded_;              // per zone, per mesh node
   std::vector<ZoneNode> slaveNodes_;                     // each slave node once (its first zone)
+  std::vector<double> scales_;                           // per zone: S (multiplier = S * unknown)
   int first_ = 0;
 };
 
@@ -214,7 +239,7 @@ class DiscreteContact final : public ContactBase {
     std::vector<double> gaps(nodes_.size(), 1.0), lambdas(nodes_.size(), 0.0);
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
       const auto& sn = nodes_[i];
-      lambdas[i] = U(first_ + static_cast<int>(i));
+      lambdas[i] = multiplier(i, U);
       const auto p =
           contact::projectOnMaster(position(sn.node, &U), masters(zones_[sn.zone], U), projections_[sn.zone]);
       gaps[i] = p.paired() ? p.projection.gap : 1.0;
@@ -246,7 +271,7 @@ class DiscreteContact final : public ContactBase {
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
       const int n = nodes_[i].node;
       f.values[5 * n] = active_[i] ? 1.0 : 0.0;
-      f.values[5 * n + 2] = U(first_ + static_cast<int>(i)) / nodes_[i].share;
+      f.values[5 * n + 2] = multiplier(i, U) / nodes_[i].share;
     }
     nodalForces(r, f);
     printNodalTable(f);
@@ -268,13 +293,19 @@ class DiscreteContact final : public ContactBase {
     dofs.push_back(first_ + static_cast<int>(i));
     return dofs;
   }
-  // Residual and tangent of node i (layout of nodeDofs), and the violation of
-  // its contact condition in length units (statusText()).
+  // Node i's multiplier lambda (its unknown is lambda / S).
+  double multiplier(std::size_t i, const Eigen::VectorXd& U) const {
+    return scales_[nodes_[i].zone] * U(first_ + static_cast<int>(i));
+  }
+  // Residual and tangent of node i (layout of nodeDofs), with respect to its
+  // unknown lambda / S and its equation times S (contact_terms.hpp), and the
+  // violation of its contact condition in length units (statusText()).
   void nodeTerms(std::size_t i, const Eigen::VectorXd& U, Eigen::VectorXd& res, Eigen::MatrixXd& Ke,
                  double& violation) const {
     const auto& sn = nodes_[i];
     const int m = static_cast<int>(nodeDofs(i).size());
-    const double lambda = U(first_ + static_cast<int>(i));
+    const double S = scales_[sn.zone];
+    const double lambda = multiplier(i, U);
     res.setZero(m);
     Ke.setZero(m, m);
     violation = 0;
@@ -285,15 +316,20 @@ class DiscreteContact final : public ContactBase {
       const auto t = contact::discreteNodeTerms(gap, lambda, active_[i], k);
       const int q = m - 1;
       res.head(q) = t.residualU.head(q);
-      res(q) = t.residualLambda;
       Ke.topLeftCorner(q, q) = t.tangentUU.topLeftCorner(q, q);
-      Ke.col(q).head(q) = t.tangentULambda.head(q);
-      Ke.row(q).head(q) = t.tangentULambda.head(q).transpose();
-      Ke(q, q) = t.tangentLambdaLambda;
+      if (active_[i]) {
+        res(q) = S * t.residualLambda;
+        Ke.col(q).head(q) = S * t.tangentULambda.head(q);
+        Ke.row(q).head(q) = S * t.tangentULambda.head(q).transpose();
+        Ke(q, q) = S * S * t.tangentLambdaLambda;
+      } else {
+        res(q) = t.residualLambda;  // lambda = 0, i.e. S * unknown = 0
+        Ke(q, q) = S * t.tangentLambdaLambda;
+      }
       violation = active_[i] ? std::fabs(t.residualLambda) : std::max(0.0, -gap.gap);
     } else {
       res(m - 1) = lambda;  // unpaired: lambda = 0
-      Ke(m - 1, m - 1) = 1.0;
+      Ke(m - 1, m - 1) = S;
     }
   }
   std::vector<SlaveNode> nodes_;
@@ -311,7 +347,7 @@ class ContinueContact final : public ContactBase {
     for (std::size_t z = 0; z < zones_.size(); ++z) {
       const auto& zs = zones_[z].settings;
       contact::ContinueOptions o;
-      o.rho = zs.rho;
+      o.rho = zs.rho * scales_[z];  // COEF_CONT is relative to Young's modulus
       o.penalty = zs.penalty;
       o.integration = zs.integration;
       o.gaussPoints = zs.gaussPoints;
@@ -338,6 +374,7 @@ class ContinueContact final : public ContactBase {
             it = lagsIndex.emplace(n[v], static_cast<int>(lagsNodes_.size())).first;
             lagsNodes_.push_back(n[v]);
             lagsShare_.push_back(0.0);
+            lagsScale_.push_back(scales_[z]);
             if (excluded_[z][n[v]]) fixedLags_.push_back(it->second);
           }
           sc.lags[v] = it->second;
@@ -423,6 +460,7 @@ class ContinueContact final : public ContactBase {
       cellTerms(sc, U, initialIteration_);
       for (const auto& p : terms_.points) pointsInContact_ += p.status == contact::PointStatus::Contact;
       for (int v = 0; v < sc.count; ++v) lagsResidual_[sc.lags[v]] += terms_.residual(terms_.lagrangeOffset + v);
+      scaleMultiplierRows(sc);
       addLocal(cellDofs(sc), terms_.residual, r);
       if (K) pattern.addMatrix(firstElement + e, terms_.tangent.data(), K->valuePtr());
       ++e;
@@ -456,10 +494,10 @@ class ContinueContact final : public ContactBase {
     for (const auto& sc : cells_) {
       const auto nodes = mesh_.cellNodes(sc.cell);
       if (sc.count == 2 && nodes.size() == 3)
-        values[nodes[2] * (nc + 1) + nc] = 0.5 * (U(first_ + sc.lags[0]) + U(first_ + sc.lags[1]));
+        values[nodes[2] * (nc + 1) + nc] = 0.5 * (lags(sc.lags[0], U) + lags(sc.lags[1], U));
     }
     for (std::size_t k = 0; k < lagsNodes_.size(); ++k)
-      values[lagsNodes_[k] * (nc + 1) + nc] = U(first_ + static_cast<int>(k));
+      values[lagsNodes_[k] * (nc + 1) + nc] = lags(static_cast<int>(k), U);
     depl.components.push_back("LAGS_C");
     depl.values = std::move(values);
   }
@@ -504,6 +542,18 @@ class ContinueContact final : public ContactBase {
     for (int v = 0; v < sc.count; ++v) dofs.push_back(first_ + sc.lags[v]);
     return dofs;
   }
+  // LAGS_C of unknown k (stored as LAGS_C / S).
+  double lags(int k, const Eigen::VectorXd& U) const { return lagsScale_[k] * U(first_ + k); }
+  // terms_ (of cell sc) with respect to the unknowns LAGS_C / S, their equations times S.
+  void scaleMultiplierRows(const SlaveCell& sc) const {
+    const int lo = terms_.lagrangeOffset;
+    for (int v = 0; v < sc.count; ++v) {
+      const double S = lagsScale_[sc.lags[v]];
+      terms_.residual(lo + v) *= S;
+      terms_.tangent.row(lo + v) *= S;
+      terms_.tangent.col(lo + v) *= S;
+    }
+  }
   contact::ForcedStatus forced(int zone, bool initial) const {
     return initial ? zones_[zone].settings.initialStatus : contact::ForcedStatus::None;
   }
@@ -517,7 +567,7 @@ class ContinueContact final : public ContactBase {
       slave.reference.row(a) = position(nodes[a], nullptr).transpose();
       slave.current.row(a) = position(nodes[a], &U).transpose();
     }
-    for (int v = 0; v < sc.count; ++v) slave.lagsC(v) = U(first_ + sc.lags[v]);
+    for (int v = 0; v < sc.count; ++v) slave.lagsC(v) = lags(sc.lags[v], U);
     std::vector<contact::Segment> m;
     for (int s : sc.candidates) m.push_back(segment(zones_[sc.zone].masterCells[s], &U));
     contact::ContinueOptions o = options_[sc.zone];
@@ -534,7 +584,7 @@ class ContinueContact final : public ContactBase {
       const auto& sn = slaveNodes_[i];
       auto& s = out[i];
       const auto [a, b] = pressureOf_[sn.node];
-      if (a >= 0) s.pressure = 0.5 * (U(first_ + a) + U(first_ + b));
+      if (a >= 0) s.pressure = 0.5 * (lags(a, U) + lags(b, U));
       const auto p = contact::projectOnMaster(position(sn.node, &U), m[sn.zone], projections_[sn.zone]);
       if (!p.paired() || excluded_[sn.zone][sn.node]) {
         s.gap = p.paired() ? p.projection.gap : 0.0;
@@ -555,6 +605,7 @@ class ContinueContact final : public ContactBase {
   std::vector<SlaveCell> cells_;
   std::vector<int> lagsNodes_;
   std::vector<double> lagsShare_;  // int L_v dGamma_0
+  std::vector<double> lagsScale_;  // S of the zone that made each LAGS_C unknown
   std::vector<int> fixedLags_;     // LAGS_C of excluded nodes: 0
   std::vector<char> fixed_;
   std::vector<std::pair<int, int>> pressureOf_;  // per mesh node: LAGS_C indices to average (-1: none)

@@ -20,6 +20,21 @@
 //   RNX, RNY  the nodal force the contact terms apply to the node (minus their
 //         part of the residual at its DX, DY): > 0 along the master normal
 //         when the master pushes the slave away.
+// Scale: every zone has a stiffness scale S, the largest Young's modulus of the
+// 2D cells touching its slave or master nodes (1 when none has one). The
+// multipliers are stored in U divided by S, and their equations multiplied by S
+// (DISCRETE: S g, or lambda itself at a node out of contact, whose diagonal is
+// then S; CONTINUE: S int L_v g, ...), so that their rows and columns are of
+// the order of the stiffness's and the residual's rows of forces; and
+// CONTINUE's augmentation coefficient is COEF_CONT * S (COEF_CONT is relative
+// to Young's modulus). Then multiplying E and the loads by s multiplies the
+// multipliers by s and leaves the Newton iterates, the statuses, the relative
+// residuals and the pivots' lost digits as they were: without it, with E in Pa
+// the separated points' block -int L L / COEF_CONT (~1e-4) stood next to a
+// Schur complement ~1e-13 and the pivot test saw a singular matrix. With E = 1
+// (S = 1) the numbers are the same to the last bit. The penalty coefficients
+// (E_N, COEF_PENA_CONT) are physical pressures per unit penetration, not scaled.
+//
 // statusText(): active nodes (DISCRETE), points and nodes in contact (CONTINUE),
 // and a contact residual in length units that vanishes at convergence:
 //   DISCRETE  max over slave nodes of |g| (active; |g - RN/E_N| penalised)
