@@ -123,7 +123,9 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
       st.masterSegment = mp.segment;
       st.masterXi = mp.projection.xi;
     }
-    st.augmented = penalised ? c * st.gap : lambda + rho * st.gap;
+    // The criterion takes a gap within round-off as closed (gap.hpp).
+    const double gc = mp.paired() && st.gap > 0 && gapIsClosed(st.gap, st.point, masters[mp.segment]) ? 0.0 : st.gap;
+    st.augmented = penalised ? c * gc : lambda + rho * gc;
     st.status = !mp.paired() ? PointStatus::Unpaired
                              : (st.augmented <= 0 ? PointStatus::Contact : PointStatus::Separated);
     if (mp.paired() && options.forcedStatus != ForcedStatus::None)

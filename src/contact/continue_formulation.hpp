@@ -40,9 +40,11 @@
 // equations. Note: the criterion is lambda + rho g < 0 (not lambda - rho g),
 // the one consistent with lambda <= 0 in compression and g > 0 when separated:
 // a penetrating point (g < 0) with lambda = 0 must switch to contact. A point
-// exactly touching with lambda = 0 (the start of a study whose slave lies on
-// the master) counts as in contact, as code_aster's CONTACT_INIT='INTERPENETRE':
-// otherwise a body held only by contact would be free at the first iteration.
+// touching with lambda = 0 (the start of a study whose slave lies on the
+// master) counts as in contact, as code_aster's CONTACT_INIT='INTERPENETRE':
+// otherwise a body held only by contact would be free at the first iteration;
+// touching is to round-off (gapIsClosed: the criterion takes a gap within
+// gapRoundOff as 0), since meshed surfaces touch only to their coordinates' digits.
 // Penalisation (ALGO_CONT='PENALISATION', kappa = COEF_PENA_CONT): the
 // pressure is lambda = kappa min(g, 0), written with the same LAGS_C unknowns
 // through the energy-like function
@@ -123,7 +125,7 @@ struct ContactPointState {
   PointStatus status = PointStatus::Separated;
   double gap = 0;                      // 0 when unpaired
   double pressure = 0;                 // interpolated LAGS_C (lambda)
-  double augmented = 0;                // pressure + rho * gap (penalisation: kappa * gap)
+  double augmented = 0;                // pressure + rho * gap, the criterion (penalisation: kappa * gap; a gap within round-off counts as 0)
   int masterSegment = -1;
   double masterXi = 0;
 };

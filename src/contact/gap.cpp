@@ -4,6 +4,7 @@
 // chain rule, with R the rotation (c_x, c_y) -> (c_y, -c_x).
 #include "contact/gap.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace aster::contact {
@@ -110,6 +111,10 @@ struct GapLinearizer {
 };
 
 }  // namespace
+
+double gapRoundOff(const Eigen::Vector2d& xs, const Segment& master) {
+  return 1e-12 * std::max(xs.lpNorm<Eigen::Infinity>(), master.x.topRows(master.nodes()).lpNorm<Eigen::Infinity>());
+}
 
 NodeGap linearizeGap(const Eigen::Vector2d& xs, const Segment& master, const Projection& projection) {
   checkSegmentType(master.type, "master");

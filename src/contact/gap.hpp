@@ -35,6 +35,16 @@ struct NodeGap {
   GapMatrix hessian;   // d2g/dq2, symmetric
 };
 
+// The round-off of a gap of xs against `master`: 1e-12 times the largest
+// coordinate of xs and the master's nodes. Surfaces meshed to touch carry
+// gaps of that size of either sign (coordinates computed as 0.1 k, written
+// to 17 digits, a middle node at (a + b) / 2, ...): a gap within it is a
+// point touching the master, which contact treats as closed (gapIsClosed).
+double gapRoundOff(const Eigen::Vector2d& xs, const Segment& master);
+inline bool gapIsClosed(double gap, const Eigen::Vector2d& xs, const Segment& master) {
+  return gap <= gapRoundOff(xs, master);
+}
+
 // Gap of xs against `master` at a given (Inside or Clamped) projection, with
 // its gradient and Hessian. Throws for an Outside projection, and when the
 // projection is degenerate (r_xi >= 0: slave point at a centre of curvature).

@@ -208,9 +208,10 @@ class DiscreteContact final : public ContactBase {
       changed |= p.segment != sn.segment;
       sn.segment = p.segment;
       sn.projection = p.projection;
-      // As code_aster's CONTACT_INIT='INTERPENETRE': nodes touching or
-      // penetrating at the start are active from the first iteration.
-      if (!started_ && p.paired() && p.projection.gap <= 0) active_[i] = true;
+      // As code_aster's CONTACT_INIT='INTERPENETRE': nodes touching (to
+      // round-off) or penetrating at the start are active from the first iteration.
+      if (!started_ && p.paired() && contact::gapIsClosed(p.projection.gap, position(sn.node, &U), m[p.segment]))
+        active_[i] = true;
     }
     started_ = true;
     return changed;
@@ -591,12 +592,15 @@ class ContinueContact final : public ContactBase {
         continue;
       }
       s.gap = p.projection.gap;
+      // A gap within round-off is closed, as at the integration points.
+      const double g =
+          s.gap > 0 && contact::gapIsClosed(s.gap, position(sn.node, &U), m[sn.zone][p.segment]) ? 0.0 : s.gap;
       const auto& o = options_[sn.zone];
       const auto f = forced(sn.zone, initial);
       if (f != contact::ForcedStatus::None)
         s.contact = f == contact::ForcedStatus::Contact;
       else
-        s.contact = (o.penalty > 0 ? o.penalty * s.gap : s.pressure + o.rho * s.gap) <= 0;
+        s.contact = (o.penalty > 0 ? o.penalty * g : s.pressure + o.rho * g) <= 0;
     }
     return out;
   }

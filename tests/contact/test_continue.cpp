@@ -220,6 +220,36 @@ TEST(Continue, SlaveLyingOnTheCurvedMasterHasZeroGap) {
   }
 }
 
+TEST(Continue, SlaveTouchingToRoundOffIsInContact) {
+  // A slave one unit in the last place above a flat master (y = 3 x 0.1 on
+  // y = 0.3), LAGS_C = 0: the start of two bodies meshed to touch. Every point
+  // is in contact (else a body held by contact alone is free); 1E-9 above,
+  // every point is separated.
+  const std::vector<Segment> masters = {Segment::seg3({1.5, 0.3}, {-0.5, 0.3}, {0.5, 0.3})};
+  for (CellType type : {CellType::SEG3, CellType::SEG2}) {
+    for (double y : {3 * 0.1, 0.3 + 1e-9}) {
+      SlaveCell s;
+      s.type = type;
+      s.reference.row(0) << 0.2, y;
+      s.reference.row(1) << 0.6, y;
+      s.reference.row(2) << 0.4, y;
+      s.current = s.reference;
+      for (double penalty : {0.0, 100.0}) {
+        ContinueOptions o;
+        o.penalty = penalty;
+        ContinueCellTerms t;
+        continueCellTerms(s, masters, o, t);
+        for (const auto& p : t.points) {
+          EXPECT_EQ(p.status, y < 0.3 + 1e-12 ? PointStatus::Contact : PointStatus::Separated) << y << " " << p.xi;
+          if (y < 0.3 + 1e-12) {
+            EXPECT_GT(p.gap, 0);
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(Continue, UnpairedPointsAreSeparatedAndBadInputThrows) {
   const std::vector<Segment> masters = {Segment::seg2({1, 0}, {0, 0})};
   SlaveCell s;

@@ -129,3 +129,25 @@ TEST(Gap, OutsideProjectionThrows) {
   const Segment m = Segment::seg2({1, 0}, {-1, 0});
   EXPECT_THROW(nodeToSegmentGap(Vector2d(5, 0.1), m), aster::Error);
 }
+
+TEST(Gap, RoundOffGapsCountAsClosed) {
+  // A master on y = 0.3 and slave points at 3 x 0.1 = 0.30000000000000004, one
+  // unit in the last place above it: a gap of 5.6E-17, closed. A gap of 1E-9
+  // is open, whatever the coordinates' size; penetration is closed.
+  for (const Segment& m : {Segment::seg2({1, 0.3}, {0, 0.3}), Segment::seg3({1, 0.3}, {0, 0.3}, {0.5, 0.3})}) {
+    for (double x : {0.0, 0.25, 1.0 / 3, 0.5}) {
+      const Vector2d xs(x, 3 * 0.1);
+      const NodeGap g = nodeToSegmentGap(xs, m);
+      ASSERT_GT(g.gap, 0);
+      EXPECT_TRUE(gapIsClosed(g.gap, xs, m)) << x;
+      EXPECT_TRUE(gapIsClosed(-1e-3, xs, m));
+      const Vector2d open(x, 0.3 + 1e-9);
+      EXPECT_FALSE(gapIsClosed(nodeToSegmentGap(open, m).gap, open, m)) << x;
+    }
+  }
+  // The round-off follows the coordinates: the same geometry 1E4 farther away.
+  const Segment far = Segment::seg2({1e4 + 1, 0.3}, {1e4, 0.3});
+  EXPECT_DOUBLE_EQ(gapRoundOff(Vector2d(1e4 + 0.5, 0.3), far), 1e-12 * (1e4 + 1));
+  EXPECT_TRUE(gapIsClosed(1e-9, Vector2d(1e4 + 0.5, 0.3), far));
+  EXPECT_FALSE(gapIsClosed(1e-7, Vector2d(1e4 + 0.5, 0.3), far));
+}
