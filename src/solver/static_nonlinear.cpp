@@ -78,6 +78,10 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
   LinearSolver& solver = *solver_->solver;
   history.clear();
   const Eigen::VectorXd Ustart = U;
+  // The size of the displacements the data of the step give: the state it
+  // starts from and the imposed values (the round-off test below).
+  double dataScale = Ustart.head(nm).lpNorm<Eigen::Infinity>();
+  for (const auto& [d, v] : imposed) dataScale = std::max(dataScale, std::fabs(v));
   // PREDICTION='EXTRAPOLE': start from U_n + (dt_{n+1} / dt_n) (U_n - U_{n-1}), the last
   // converged (sub-)step's increment; the first step has none and starts from U_n.
   if (settings_.prediction == Prediction::Extrapolated && previousDt_ > 0)
@@ -190,11 +194,14 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
                              (!settings_.useMaxi || resMax <= settings_.resiGlobMaxi) &&
                              (settings_.useRela || settings_.useMaxi);
     // With no load at all (a rigid motion imposed, say) the relative residual is
-    // noise over noise: accept a residual at round-off level of the stiffness forces.
+    // noise over noise: accept a residual at round-off level of the stiffness forces
+    // of displacements of the size the data give. Not of the current ones: a
+    // singular matrix solved anyway (NPREC <= 0, STOP_SINGULIER='NON') gives
+    // displacements of 1e13 whose round-off would hide a residual that does not fall.
     double kmax = 0;
     const fem::SparseMatrix& Kscale = elasticNow ? Kelastic_ : K_;
     for (int i = 0; i < Kscale.outerSize(); ++i) kmax = std::max(kmax, std::fabs(Kscale.coeff(i, i)));
-    const bool atRoundOff = resMax <= 1e-13 * kmax * std::max(U.head(nm).lpNorm<Eigen::Infinity>(), 1e-30);
+    const bool atRoundOff = resMax <= 1e-13 * kmax * dataScale;
     bool dirichletMet = true;
     for (const auto& [d, v] : imposed) dirichletMet = dirichletMet && std::fabs(U(d) - v) <= 1e-12 * (1 + std::fabs(v));
     if (k > 0 && (criteriaMet || atRoundOff) && !statusChanged && dirichletMet) {
@@ -324,10 +331,18 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
     std::string why;
     if (!interval(times[k - 1], times[k], 0, why)) {
       stats_.totalSeconds += seconds(start);
+      // Without the pivot test a singular matrix is solved anyway: its garbage
+      // correction is what keeps the residual from falling.
+      const std::string singular =
+          settings_.nprec <= 0 ? "; SOLVEUR: NPREC <= 0 or STOP_SINGULIER = 'NON' solves even a singular matrix, "
+                                 "whose corrections do not reduce the residual: check the Dirichlet conditions "
+                                 "(the default NPREC names a free unknown)"
+                               : "";
       throw Error("the instant " + sci(times[k]) + " did not converge: " + why +
                   (settings_.subdNiveau > 0 ? " (even after cutting the step " + std::to_string(settings_.subdNiveau) +
                                                   " times)"
-                                            : ""));
+                                            : "") +
+                  singular);
     }
     Eigen::VectorXd reactions = r_;
     Eigen::VectorXd internalForces = fint_;
