@@ -95,7 +95,8 @@ void KluSolver::factorize(const SparseMatrix& A) {
   }
 }
 
-// KLU factors P (R\A) Q = L U + off-diagonal blocks, R the row scaling.
+// KLU factors P (R\A) Q = L U + off-diagonal blocks, R the row scaling; after the
+// factorization KLU holds the scale factors in pivot order (Rs[k] is row Pnum[k]'s).
 void KluSolver::auditFactor(const SparseMatrix& A) const {
   const int* P = h_->numeric->Pnum;
   const int* Q = h_->symbolic->Q;
@@ -104,7 +105,7 @@ void KluSolver::auditFactor(const SparseMatrix& A) const {
   auditPivots(name(), pattern_.size(), nprec_, [&](int k) {
     const int row = P[k], col = Q[k];
     const double a = entryOf(A, row, col);
-    return Pivot{udiag[k], rs ? a / rs[row] : a, row, col};
+    return Pivot{udiag[k], rs ? a / rs[k] : a, row, col};
   });
 }
 

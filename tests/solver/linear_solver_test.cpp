@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -188,6 +189,30 @@ TEST_P(LuMethod, SolvesSymmetricIndefinite) {
 TEST_P(LuMethod, SolvesSaddlePointWithLagrangeMultipliers) {
   auto solver = makeLinearSolver(GetParam());
   expectSolves(*solver, saddlePoint(10, 5), 1e-9);
+}
+
+TEST_P(LuMethod, RowsOfVeryDifferentScalesAreNotSingular) {
+  // Rows of scales 1e12 and 1 (a stiffness in Pa next to identity rows, say) that
+  // the pivoting swaps: [[1, 1e12], [1, 1]] loses no digit. KLU's audit once read
+  // its row scale factors by row where they are by pivot, and found 12 lost.
+  const SparseMatrix A = fromTriplets(3, {{0, 0, 1.0}, {0, 1, 1e12}, {1, 0, 1.0}, {1, 1, 1.0}, {2, 2, 1.0}});
+  auto solver = makeLinearSolver(GetParam());
+  solver->analyze(A);
+  ASSERT_NO_THROW(solver->factorize(A));
+  Eigen::VectorXd x;
+  solver->solve(Eigen::Vector3d(3.0 + 2e12, 5.0, 4.0), x);
+  EXPECT_NEAR(x[0], 3.0, 1e-12);
+  EXPECT_NEAR(x[1], 2.0, 1e-12);
+  EXPECT_NEAR(x[2], 4.0, 1e-12);
+  // The saddle point with its stiffness rows and columns times 2.1e11 and its
+  // multipliers' over it (the scaling contact uses): solved as at scale 1.
+  SparseMatrix B = saddlePoint(10, 5);
+  const int n = static_cast<int>(B.rows());
+  Eigen::VectorXd d = Eigen::VectorXd::Ones(n);
+  d.head(n - 5).setConstant(std::sqrt(2.1e11));
+  B = d.asDiagonal() * B * d.asDiagonal();
+  auto scaled = makeLinearSolver(GetParam());
+  expectSolves(*scaled, B, 1e-7);  // EIGEN_LU does not equilibrate the rows: 2e-8
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, LuMethod, ::testing::Values("UMFPACK", "KLU", "EIGEN_LU"),
