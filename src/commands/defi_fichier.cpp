@@ -12,6 +12,8 @@ ConceptPtr defiFichier(const Keywords& k, Session& session, ConceptPtr) {
     return nullptr;
   }
   session.units[unit] = session.studyRelative(k.text("FICHIER"));
+  if (k.text("ACCES", "NEW") == "OLD")  // declared for reading: never written over
+    session.files.addInput(session.units[unit], "bound for reading by DEFI_FICHIER at " + session.where);
   return nullptr;
 }
 

@@ -97,13 +97,6 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
-// A file written for the first time in this run is truncated, later writes append.
-std::ofstream openForRun(const std::filesystem::path& p) {
-  static std::set<std::string> seen;
-  const bool first = seen.insert(std::filesystem::absolute(p).string()).second;
-  return std::ofstream(p, first ? std::ios::trunc : std::ios::app);
-}
-
 std::string findProgram(const std::string& name) {
   const char* path = std::getenv("PATH");
   std::stringstream ss(path ? path : "/usr/bin:/bin");
@@ -194,9 +187,11 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
     }
     const auto path = bound != session.units.end() ? bound->second
                                                    : session.outputFile("fort." + std::to_string(unit));
-    auto f = openForRun(path);
-    f << out.str();
-    if (!f) throw Error("cannot write " + path.string());
+    if (const std::string how = session.inputOf(path); !how.empty())
+      throw Error("UNITE=" + std::to_string(unit) + " is bound to " + path.string() + ", an input of the study (" +
+                  how + "): aster-lite never writes over a file the study read; bind another file to the unit");
+    // A file written for the first time in this run starts afresh, later writes add to it.
+    appendAtomically(path, out.str(), session.files.written(path), &session.files);
     if (unit == 8 && bound == session.units.end()) {
       std::fputs(out.str().c_str(), stdout);
       std::fflush(stdout);
@@ -206,11 +201,18 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   const std::string ext = format == "PNG" ? ".png" : ".svg";
   static int plots = 0;
   ++plots;
-  const std::filesystem::path image = bound != session.units.end()
-                                          ? bound->second
-                                          : session.outputFile("fonction_" + std::to_string(plots) + ext);
-  const std::string stem = image.stem().string();
+  std::filesystem::path image = bound != session.units.end()
+                                    ? bound->second
+                                    : session.outputFile("fonction_" + std::to_string(plots) + ext);
+  if (const std::string how = session.inputOf(image); !how.empty())
+    throw Error("UNITE=" + std::to_string(unit) + " is bound to " + image.string() + ", an input of the study (" +
+                how + "): aster-lite never writes over a file the study read; bind another file to the unit");
+  if (session.files.written(image))  // a second plot to one unit gets a file of its own
+    image = session.files.fresh(image.parent_path(), image.stem().string(), image.extension().string());
+  session.files.addWritten(image);
   const auto dir = session.outputFile("");
+  // Each plot's script and data files are its own (two images of one name in two folders).
+  const std::string stem = session.files.fresh(dir, image.stem().string(), ".gp").stem().string();
   std::ostringstream gp;
   gp << "reset session\n";  // the scripts of a run are drawn by one gnuplot, one after the other
   gp << "set terminal " << (format == "PNG" ? "pngcairo" : "svg") << " size 900,650 noenhanced font 'Sans,11'\n";
@@ -230,9 +232,10 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   gp << "plot ";
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const auto data = dir / (stem + "_" + std::to_string(i + 1) + ".dat");
-    std::ofstream d(data);
-    for (std::size_t j = 0; j < curves[i].x.size(); ++j) d << number(curves[i].x[j]) << " " << number(curves[i].y[j]) << "\n";
-    if (!d) throw Error("cannot write " + data.string());
+    std::string values;
+    for (std::size_t j = 0; j < curves[i].x.size(); ++j)
+      values += number(curves[i].x[j]) + " " + number(curves[i].y[j]) + "\n";
+    session.writeFile(data, [&](const std::filesystem::path& tmp) { writeTextFile(tmp, values); });
     const auto& c = curves[i];
     const bool line = c.style != 0, points = c.marker != 0;
     gp << (i ? ", \\\n     " : "") << quoted(std::filesystem::absolute(data).string()) << " using 1:2 with "
@@ -244,11 +247,7 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   }
   gp << "\nunset output\n";  // closes the image before the next script opens its own
   const auto script = dir / (stem + ".gp");
-  {
-    std::ofstream s(script);
-    s << gp.str();
-    if (!s) throw Error("cannot write " + script.string());
-  }
+  session.writeFile(script, [&](const std::filesystem::path& tmp) { writeTextFile(tmp, gp.str()); });
   if (findProgram("gnuplot").empty())
     throw Error("FORMAT='PNG'/'SVG' runs gnuplot, which is not installed (Debian/Ubuntu: apt-get install gnuplot-nox); "
                 "the script is " + script.string());

@@ -3,8 +3,10 @@
 // GMSH (.msh 2.2 ASCII) or VTK (.vtu, or a .pvd collection for a result).
 // The file is the one bound to UNITE (DEFI_FICHIER, -u N=path), else
 // <output>/<study>.resu.txt|.med|.msh|.vtu|.pvd. Files are written in a private
-// folder beside the target and renamed into place: an interrupted run never
-// leaves a half-written file.
+// folder beside the target and renamed into place: an interrupted run or a full
+// disk never leaves a half-written file. A second write of the run to one file
+// adds to it (text, MED) or goes to <name>-2.<ext> (GMSH, VTK); a file the study
+// read is never written over.
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +15,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
@@ -292,6 +295,7 @@ struct Merged {
   ConceptPtr meshConcept;
   std::vector<mesh::FieldInstant> instants;
   bool hasResult = false;
+  std::map<std::string, std::string> ownerOf;  // field name -> the concept it comes from
 };
 
 Merged merge(const std::vector<Item>& items, const std::string& format, Session& session) {
@@ -319,6 +323,7 @@ Merged merge(const std::vector<Item>& items, const std::string& format, Session&
             f.name = session.nameOf(*it.owner) + "_" + f.name;
             break;
           }
+        m.ownerOf[f.name] = session.nameOf(*it.owner);
         into->fields.push_back(std::move(f));
       }
     }
@@ -332,6 +337,38 @@ std::string medMeshName(const Merged& m, Session& session) {
   if (!m.meshConcept) return "MAIL";
   const std::string name = session.nameOf(*m.meshConcept);
   return name.find('@') == std::string::npos && !name.empty() ? name : "MAIL";
+}
+
+// ------------------------------------------------------------ files of the run
+
+// What this run put in a file of IMPR_RESU, so that a later IMPR_RESU to the
+// same unit adds to it as code_aster does: a MED file takes more meshes and
+// fields, a text file more listings. Keyed by the file; reset when a run writes
+// the file afresh.
+struct Written {
+  std::string format;
+  std::vector<std::pair<std::weak_ptr<mesh::Mesh>, std::string>> meshes;  // MED: mesh and its name in the file
+  std::set<std::string> fields;                                    // MED field names
+};
+std::map<std::string, Written>& writtenFiles() {
+  static std::map<std::string, Written> files;
+  return files;
+}
+std::string keyOf(const fs::path& p) { return fs::absolute(p).lexically_normal().string(); }
+
+// `name`, else owner_name, else name_2, name_3...: the first not in `used`.
+std::string freeName(const std::string& name, const std::string& owner, const std::set<std::string>& used) {
+  if (!used.count(name)) return name;
+  if (!owner.empty() && owner != name && !used.count(owner + "_" + name)) return owner + "_" + name;
+  for (int n = 2;; ++n)
+    if (!used.count(name + "_" + std::to_string(n))) return name + "_" + std::to_string(n);
+}
+
+// Removes the .vtu of a collection that an earlier run wrote beyond this one's instants.
+void removeStaleInstants(Session& session, const fs::path& pvd) {
+  const std::string stem = pvd.stem().string();
+  session.files.removeStale(pvd.parent_path(),
+                            [&](const std::string& f) { return isNumberedFile(f, stem, ".vtu"); });
 }
 
 // ------------------------------------------------------------ operator
@@ -357,51 +394,136 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
   if (!text) merged = merge(items, format, session);
   std::string ext = text ? ".resu.txt" : format == "MED" ? ".med" : format == "GMSH" ? ".msh"
                                         : merged.hasResult ? ".pvd" : ".vtu";
+
+  // The file: the one bound to the unit, else <output>/<study><ext>. Never an
+  // input of the study; a second write of the run adds to a text or MED file
+  // (code_aster's units 8 and 80) and goes to a file of its own in GMSH and VTK
+  // (<name>-2.msh), which cannot hold two writes.
+  const std::string unitText = "UNITE=" + std::to_string(unit);
   const auto bound = session.units.find(unit);
-  const fs::path path = bound != session.units.end() ? bound->second
-                                                      : session.outputFile(session.studyPath.stem().string() + ext);
+  fs::path path = bound != session.units.end() ? bound->second
+                                               : session.outputFile(session.studyPath.stem().string() + ext);
+  const fs::path folder = path.parent_path();
+  const std::string stem = fs::path(path).replace_extension("").filename().string();
+  const std::string pathExt = path.extension().string();
+  std::string note;
+  if (const std::string how = session.inputOf(path); !how.empty()) {
+    if (bound != session.units.end())
+      throw Error(unitText + " is bound to " + path.string() + ", an input of the study (" + how +
+                  "): aster-lite never writes over a file the study read; bind another file to the unit");
+    note = path.filename().string() + " is an input of the study, never written over";
+    for (int n = 2; !session.inputOf(path).empty(); ++n) path = folder / (stem + "-" + std::to_string(n) + pathExt);
+  }
+  const bool canAdd = text || format == "MED";
+  const bool add = canAdd && session.files.written(path);
+  if (add) {
+    const auto it = writtenFiles().find(keyOf(path));
+    const std::string before = it == writtenFiles().end() ? std::string("another command") : it->second.format;
+    if (before != format && !(text && it == writtenFiles().end()))
+      throw Error(unitText + ": " + path.string() + " holds " +
+                  (it == writtenFiles().end() ? "what another command wrote" : "FORMAT='" + before + "'") +
+                  " from earlier in this run; write FORMAT='" + format + "' to another unit");
+  }
+  if (!canAdd && session.files.written(path)) {
+    note = path.filename().string() + " holds an earlier IMPR_RESU of this run";
+    path = session.files.fresh(folder, stem, pathExt, [&](const std::string& name) {
+      if (pathExt != ".pvd") return false;
+      bool taken = false;
+      std::error_code ec;
+      for (fs::directory_iterator d(folder, ec), end; !ec && d != end && !taken; d.increment(ec))
+        taken = isNumberedFile(d->path().filename().string(), name, ".vtu") && session.files.written(d->path());
+      return taken;
+    });
+  }
 
-  // Text files this run has written already (keyed by the session: one per run).
-  static std::map<std::string, const Session*> textWritten;
-  const std::string key = fs::absolute(path).lexically_normal().string();
-  const bool appendText = text && textWritten.count(key) && textWritten[key] == &session && fs::exists(path);
-
-  writeAtomically(path, [&](const fs::path& tmp) {
-    const std::string p = tmp.string();
-    if (text) {
-      std::ofstream out(tmp, std::ios::binary);
-      // Several IMPR_RESU of one run to the same text file follow each other
-      // (code_aster's unit 8); a new run starts the file afresh.
-      if (appendText) {
-        std::ifstream before(path, std::ios::binary);
-        out << before.rdbuf();
+  Written& record = writtenFiles()[keyOf(path)];
+  if (!add) record = Written{format, {}, {}};
+  std::string meshName;
+  bool meshPresent = false;
+  std::vector<mesh::FieldInstant> instants = merged.instants;
+  if (format == "MED") {
+    for (const auto& [m, name] : record.meshes)
+      if (!m.owner_before(merged.mesh) && !merged.mesh.owner_before(m)) {  // the same mesh object
+        meshName = name;
+        meshPresent = true;
       }
-      out << textOf(items, occs, session);
-      out.close();
-      if (!out) throw Error("cannot write " + p);
-    } else if (format == "MED") {
-      if (merged.instants.empty())
-        mesh::writeMedMesh(*merged.mesh, p, medMeshName(merged, session));
-      else
-        mesh::writeMedResults(*merged.mesh, p, merged.instants, medMeshName(merged, session));
-    } else if (format == "GMSH") {
-      mesh::GmshWriteOptions options;
-      options.version = 2.2;  // the catalogue's promise: version 2 ASCII
-      if (merged.instants.empty())
-        mesh::writeGmshMesh(*merged.mesh, p, options);
-      else
-        mesh::writeGmshResults(*merged.mesh, p, merged.instants, options);
-    } else if (merged.hasResult) {
-      mesh::writePvd(*merged.mesh, p, merged.instants);
-    } else {
-      std::vector<mesh::NodalField> fields;
-      for (const auto& fi : merged.instants)
-        for (const auto& f : fi.fields) fields.push_back(f);
-      mesh::writeVtu(*merged.mesh, p, fields);
+    if (!meshPresent) {
+      std::set<std::string> used;
+      for (const auto& [m, name] : record.meshes) used.insert(name);
+      meshName = freeName(medMeshName(merged, session), "", used);
     }
-  });
-  if (text) textWritten[key] = &session;
-  if (k.integer("INFO") >= 1) Messages::info("IMPR_RESU: FORMAT='" + format + "' written to " + path.string());
+    // Field names must be new in the file: <concept>_<field>, else a number.
+    std::map<std::string, std::string> renamed;
+    std::set<std::string> used = record.fields;
+    for (const auto& fi : instants)
+      for (const auto& f : fi.fields)
+        if (!renamed.count(f.name)) {
+          renamed[f.name] = freeName(f.name, merged.ownerOf[f.name], used);
+          used.insert(renamed[f.name]);
+        }
+    for (auto& fi : instants)
+      for (auto& f : fi.fields) f.name = renamed[f.name];
+  }
+
+  try {
+    // Text: the listings of a run's IMPR_RESU to one file follow each other (code_aster's unit 8).
+    if (text) appendAtomically(path, textOf(items, occs, session), add, &session.files);
+    else session.writeFile(path, [&](const fs::path& tmp) {
+      const std::string p = tmp.string();
+      if (format == "MED") {
+        if (add) {
+          std::error_code ec;
+          fs::copy_file(path, tmp, ec);
+          if (ec) throw Error("cannot write " + p + ": " + ec.message());
+          mesh::addMedResults(*merged.mesh, p, instants, meshName, meshPresent);
+        } else if (instants.empty()) {
+          mesh::writeMedMesh(*merged.mesh, p, meshName);
+        } else {
+          mesh::writeMedResults(*merged.mesh, p, instants, meshName);
+        }
+      } else if (format == "GMSH") {
+        mesh::GmshWriteOptions options;
+        options.version = 2.2;  // the catalogue's promise: version 2 ASCII
+        if (instants.empty())
+          mesh::writeGmshMesh(*merged.mesh, p, options);
+        else
+          mesh::writeGmshResults(*merged.mesh, p, instants, options);
+      } else if (merged.hasResult) {
+        mesh::writePvd(*merged.mesh, p, instants);
+      } else {
+        std::vector<mesh::NodalField> fields;
+        for (const auto& fi : instants)
+          for (const auto& f : fi.fields) fields.push_back(f);
+        mesh::writeVtu(*merged.mesh, p, fields);
+      }
+    });
+  } catch (...) {
+    if (!add) writtenFiles().erase(keyOf(path));
+    throw;
+  }
+  if (format == "MED") {
+    if (!meshPresent) record.meshes.emplace_back(merged.mesh, meshName);
+    for (const auto& fi : instants)
+      for (const auto& f : fi.fields) record.fields.insert(f.name);
+  }
+  if (format == "VTK" && merged.hasResult) removeStaleInstants(session, path);
+
+  if (k.integer("INFO") >= 1) {
+    std::string how = add ? " (added to the file of an earlier IMPR_RESU of this run" : "";
+    if (add && format == "MED") {
+      how += ": mesh " + meshName + (meshPresent ? " (already there)" : "");
+      std::set<std::string> names;
+      for (const auto& fi : instants)
+        for (const auto& f : fi.fields) names.insert(f.name);
+      if (!names.empty()) {
+        how += ", fields";
+        for (const auto& n : names) how += " " + n;
+      }
+    }
+    if (add) how += ")";
+    if (!note.empty()) how += " (" + note + ")";
+    Messages::info("IMPR_RESU: FORMAT='" + format + "' (" + unitText + ") written to " + path.string() + how);
+  }
   return nullptr;
 }
 

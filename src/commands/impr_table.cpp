@@ -1,8 +1,9 @@
 // IMPR_TABLE: a table (filtered, sorted, some columns) as aligned columns
 // (TABLEAU, also printed on the screen) or CSV, appended to the file bound to
-// UNITE, or written to <output>/<table name>.tab|.csv when the unit is not bound.
+// UNITE, or written to <output>/<table name>.tab|.csv when the unit is not bound
+// (later IMPR_TABLE of the run to that file follow the first). Never over an
+// input of the study; the file is complete or unchanged (a full disk is an error).
 #include <cstdio>
-#include <fstream>
 
 #include "commands/table_concept.hpp"
 #include "core/error.hpp"
@@ -33,17 +34,21 @@ ConceptPtr imprTable(const Keywords& k, Session& session, ConceptPtr) {
   const int unit = static_cast<int>(k.integer("UNITE"));
   std::filesystem::path path;
   auto bound = session.units.find(unit);
-  std::ios::openmode mode = std::ios::out;
+  bool keep;
   if (bound != session.units.end()) {
     path = bound->second;
-    mode |= std::ios::app;
+    if (const std::string how = session.inputOf(path); !how.empty())
+      throw Error("UNITE=" + std::to_string(unit) + " is bound to " + path.string() + ", an input of the study (" +
+                  how + "): aster-lite never writes over a file the study read; bind another file to the unit");
+    keep = true;
   } else {
-    std::string name = session.nameOf(*tc);
+    // A second IMPR_TABLE of the run to the same file follows the first.
+    const std::string name = session.nameOf(*tc);
     path = session.outputFile(name + (csv ? ".csv" : ".tab"));
+    if (!session.inputOf(path).empty()) path = session.files.fresh(path.parent_path(), name, csv ? ".csv" : ".tab");
+    keep = session.files.written(path);
   }
-  std::ofstream file(path, mode);
-  file << text;
-  if (!file) throw Error("cannot write the table to " + path.string());
+  appendAtomically(path, text, keep, &session.files);
   if (!csv) {
     std::fputs(text.c_str(), stdout);
     std::fflush(stdout);

@@ -25,6 +25,7 @@ ConceptPtr lireMaillage(const Keywords& k, Session& session, ConceptPtr) {
     throw Error("UNITE=" + std::to_string(unit) + ": the file " + path.string() +
                 " does not exist (bind a file with DEFI_FICHIER{ACTION='ASSOCIER', UNITE=" + std::to_string(unit) +
                 ", FICHIER='...'} or aster-lite -u " + std::to_string(unit) + "=PATH)");
+  session.files.addInput(path, "read by LIRE_MAILLAGE at " + session.where);  // never written over
   auto m = std::make_shared<mesh::Mesh>();
   if (format == "ASTER") {
     *m = mesh::readAsterMesh(path.string());

@@ -2,27 +2,39 @@
 // written at once to <output-dir>/<NAME>_<k>.vtu, then <NAME>.pvd (ParaView's
 // collection) is rewritten to list it. Both are renamed into place when
 // complete, so after a fatal error, Ctrl-C or even a kill, the .pvd on disk
-// lists exactly the converged instants and every file it names is whole.
+// lists exactly the converged instants and every file it names is whole. A
+// write that fails (full disk) leaves the files of the earlier instants as they
+// were and no file the .pvd does not list.
 #pragma once
 #include <filesystem>
 #include <vector>
 
 #include "commands/result_concepts.hpp"
+#include "core/atomic_write.hpp"
 #include "mesh/io/vtk_format.hpp"
 
 namespace aster::lang {
 
 class ResultArchive {
  public:
-  // Removes a collection of that name left by an earlier run first: the .pvd on
-  // disk never mixes two runs.
-  ResultArchive(const mesh::Mesh& mesh, std::filesystem::path pvd);
+  // Removes what an earlier run left under this name first (<NAME>.pvd and
+  // <NAME>_<k>.vtu; for a first result of its name also <NAME>-<n>.pvd and
+  // <NAME>-<n>_<k>.vtu, the names of later results of that name), so that the
+  // folder never mixes two runs. With `files`, never an input of the study nor a
+  // file this run wrote: a .pvd of that name written by another command of the
+  // run makes the archive take the next free name (path() says which).
+  ResultArchive(const mesh::Mesh& mesh, std::filesystem::path pvd, RunFiles* files = nullptr);
+  // On failure (aster::Error, naming the file and the system's reason) the
+  // instant is not on disk and the .pvd still lists the earlier ones.
   void add(const ResultInstant& instant);
   const std::filesystem::path& path() const { return pvd_; }
+  // The instants on disk, listed by the .pvd.
+  std::size_t stored() const { return entries_.size(); }
 
  private:
   const mesh::Mesh& mesh_;
   std::filesystem::path pvd_;
+  RunFiles* files_;
   std::vector<mesh::PvdEntry> entries_;
 };
 

@@ -217,8 +217,17 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
 
   // Every instant goes to disk as soon as it is in the result.
   const std::string stem = session.uniqueOutputStem(session.assignedName.empty() ? "STAT_NON_LINE" : session.assignedName);
-  ResultArchive archive(mesh, session.outputFile(stem + ".pvd"));
-  for (const auto& inst : result->instants) archive.add(inst);
+  ResultArchive archive(mesh, session.outputFile(stem + ".pvd"), &session.files);
+  // The count is what the .pvd on disk lists.
+  auto stored = [&](const char* when) {
+    return "; " + std::to_string(archive.stored()) + " instant(s) were stored " + when + ", in " +
+           archive.path().string();
+  };
+  try {
+    for (const auto& inst : result->instants) archive.add(inst);
+  } catch (const Error& e) {
+    throw Error(e.what() + stored("before the failure"));
+  }
   Messages::info("STAT_NON_LINE: each converged instant is written to " + archive.path().string());
 
   auto store = [&](const solver::ConvergedInstant& c) {
@@ -245,18 +254,16 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     GaussField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, model->cells(), {}, {}};
     system.gaussStresses(*c.U, sief.offsets, sief.values);
     inst.gauss.push_back(std::move(sief));
+    archive.add(inst);  // an instant that is not on disk (full disk) is not in the result either
     result->instants.push_back(std::move(inst));
-    archive.add(result->instants.back());
   };
   try {
     newtonSolver.run(U, times, store);
   } catch (const Interrupted& e) {
-    throw Interrupted(std::string(e.what()) + "; " + std::to_string(result->instants.size()) +
-                      " instant(s) were stored before it");
+    throw Interrupted(e.what() + stored("before it"));
   } catch (const Error& e) {
     // The converged instants stay in the result; the study stops here.
-    throw Error(std::string(e.what()) + "; " + std::to_string(result->instants.size()) +
-                " instant(s) were stored before the failure");
+    throw Error(e.what() + stored("before the failure"));
   }
   const auto& st = newtonSolver.statistics();
   char buf[256];

@@ -1,6 +1,5 @@
 #include "lang/session.hpp"
 
-#include <fstream>
 #include <system_error>
 
 #include "core/messages.hpp"
@@ -39,15 +38,25 @@ std::filesystem::path Session::resuPath() const {
   return outputDir / (studyPath.stem().string() + ".resu");
 }
 
+void Session::writeFile(const std::filesystem::path& target,
+                        const std::function<void(const std::filesystem::path&)>& write) {
+  if (!studyPath.empty()) files.addInput(studyPath, "the study file");
+  writeAtomically(target, write, &files);
+}
+
+std::string Session::inputOf(const std::filesystem::path& file) {
+  if (!studyPath.empty()) files.addInput(studyPath, "the study file");
+  return files.inputOf(file);
+}
+
 void Session::recordCheck(const std::string& block, bool ok) {
   (ok ? checksOk : checksNook) += 1;
   // Checks are always shown, even with --quiet: they are the study's verdict.
   std::fputs(block.c_str(), stdout);
   std::fflush(stdout);
   const auto path = outputFile(resuPath().filename().string());
-  std::ofstream out(path, checksOk + checksNook == 1 ? std::ios::trunc : std::ios::app);
-  out << block;
-  if (!out) throw Error("cannot write " + path.string());
+  if (!studyPath.empty()) files.addInput(studyPath, "the study file");
+  appendAtomically(path, block, checksOk + checksNook > 1 && files.written(path), &files);
 }
 
 std::string Session::recordCheckSummary() {
@@ -56,8 +65,7 @@ std::string Session::recordCheckSummary() {
   const std::string line =
       "<I> checks: " + std::to_string(checksOk) + " OK, " + std::to_string(checksNook) + " NOOK";
   const auto path = outputFile(resuPath().filename().string());
-  std::ofstream out(path, std::ios::app);
-  out << "\n" << line << "\n";
+  appendAtomically(path, "\n" + line + "\n", files.written(path), &files);
   return line;
 }
 

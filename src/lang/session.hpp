@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/atomic_write.hpp"
 #include "core/concept.hpp"
 
 namespace aster::lang {
@@ -30,6 +31,15 @@ struct Session {
   // Concepts a macro-command created under names given with CO('name'):
   // the interpreter binds each to a global variable of the study after the call.
   std::vector<std::pair<std::string, ConceptPtr>> produced;
+
+  // The files of the run: those the study read (LIRE_MAILLAGE, DEFI_FICHIER
+  // ACCES='OLD', the study itself), which are never written over, and those it wrote.
+  RunFiles files;
+  // Every file a command writes: complete or absent (writeAtomically), never over
+  // an input of the study; the study file counts as one.
+  void writeFile(const std::filesystem::path& target, const std::function<void(const std::filesystem::path&)>& write);
+  // How `file` was read when it is an input of the study (the study file included), else "".
+  std::string inputOf(const std::filesystem::path& file);
 
   // TEST_RESU and friends: counts, and the lines of <output-dir>/<study>.resu.
   int checksOk = 0;

@@ -3,6 +3,7 @@
 #include <med.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -76,6 +77,12 @@ class MedFile {
   med_idt id() const { return fid_; }
   void check(med_err status, const std::string& what) const {
     if (status < 0) throw Error(path_ + ": MED error while " + what);
+  }
+  // Closes now, checked: the MED library (HDF5) writes much of a file when it closes it.
+  void close() {
+    const med_err status = medLibrary().fileClose(fid_);
+    fid_ = -1;
+    check(status, "closing the file");
   }
 
  private:
@@ -234,12 +241,38 @@ void writeMedMesh(const Mesh& mesh, const std::string& path, const std::string& 
   writeMedResults(mesh, path, {}, meshName);
 }
 
+namespace {
+
+// Writes to a new file, or adds to a copy of one (MED_ACC_RDWR), and closes it: every call
+// and the close are checked. HDF5 keeps errno from the failing write: a full disk
+// or a file-size limit is named.
+void writeMedFile(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
+                  const std::string& meshName, bool add, bool meshPresent) {
+  errno = 0;
+  try {
+    if (!add) std::remove(path.c_str());
+    MedFile file(path, add ? MED_ACC_RDWR : MED_ACC_CREAT);
+    if (!meshPresent) writeMesh(file, mesh, meshName);
+    writeFields(file, mesh, instants, meshName);
+    file.close();
+  } catch (const Error& e) {
+    const int why = errno;
+    if (why == ENOSPC || why == EFBIG || why == EDQUOT || why == EIO)
+      throw Error(std::string(e.what()) + ": " + std::strerror(why));
+    throw;
+  }
+}
+
+}  // namespace
+
 void writeMedResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
                      const std::string& meshName) {
-  std::remove(path.c_str());
-  MedFile file(path, MED_ACC_CREAT);
-  writeMesh(file, mesh, meshName);
-  writeFields(file, mesh, instants, meshName);
+  writeMedFile(mesh, path, instants, meshName, false, false);
+}
+
+void addMedResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
+                   const std::string& meshName, bool meshPresent) {
+  writeMedFile(mesh, path, instants, meshName, true, meshPresent);
 }
 
 Mesh readMedMesh(const std::string& path, const std::string& wanted) {

@@ -25,6 +25,12 @@ void writeMedMesh(const Mesh& mesh, const std::string& path, const std::string& 
 void writeMedResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
                      const std::string& meshName = "MAIL");
 
+// Adds to a MED file written by writeMedResults (as code_aster adds to the file of
+// one unit): the mesh `meshName` unless `meshPresent` (the file holds it already),
+// then the fields, whose names must not be in the file yet.
+void addMedResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
+                   const std::string& meshName, bool meshPresent);
+
 // One nodal field at one time step (numdt) as written above: components and values.
 NodalField readMedNodalField(const std::string& path, const std::string& fieldName, int numdt);
 

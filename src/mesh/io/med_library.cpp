@@ -1,5 +1,7 @@
 #include "mesh/io/med_library.hpp"
 
+#include <dlfcn.h>
+
 #include "mesh/io/loaded_library.hpp"
 
 // The soname of the libmedC found at configure time (cmake/Dependencies.cmake).
@@ -44,6 +46,10 @@ MedLibrary load() {
   ASTER_MED_RESOLVE(nFamilyGroup);
   ASTER_MED_RESOLVE(nMesh);
 #undef ASTER_MED_RESOLVE
+  // No HDF5 clean-up at exit: aster-lite closes every MED file it opens, and after a
+  // close that failed (full disk) HDF5's clean-up crashes on the file it kept.
+  // Must come before HDF5's first call, which registers that clean-up.
+  if (auto dontAtExit = reinterpret_cast<int (*)()>(dlsym(handle, "H5dont_atexit"))) dontAtExit();
   return api;
 }
 

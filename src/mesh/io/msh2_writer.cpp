@@ -1,11 +1,10 @@
 #include "mesh/io/msh2_writer.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <map>
-#include <memory>
 #include <tuple>
 
+#include "core/atomic_write.hpp"
 #include "core/error.hpp"
 #include "mesh/io/gmsh_format.hpp"
 #include "mesh/group_ops.hpp"
@@ -14,10 +13,6 @@
 
 namespace aster::mesh {
 namespace {
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
 
 // One $NodeData view: a name, its width (1, 3 or 9) and a value per (node, component).
 struct View {
@@ -44,9 +39,7 @@ std::vector<View> viewsOf(const NodalField& f) {
 }  // namespace
 
 void writeMsh2(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants) {
-  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "w"));
-  if (!file) throw Error("cannot write " + path);
-  std::FILE* out = file.get();
+  OutputFile out(path);
 
   // Entities: one per (dimension, groups of the cell), in the order of the cells.
   const auto groupNames = mesh.cellGroupNames();
@@ -77,23 +70,23 @@ void writeMsh2(const Mesh& mesh, const std::string& path, const std::vector<Fiel
   for (int c = 0; c < mesh.cellCount(); ++c)
     if (groupsOfCell[c].empty()) addPhysical(topologicalDimension(mesh.cellType(c)), -1, kGmshUngroupedName);
 
-  std::fprintf(out, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%zu\n", names.size());
-  for (const auto& [dim, tag, name] : names) std::fprintf(out, "%d %d \"%s\"\n", dim, tag, name.c_str());
-  std::fprintf(out, "$EndPhysicalNames\n$Nodes\n%d\n", mesh.nodeCount());
+  out.printf("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%zu\n", names.size());
+  for (const auto& [dim, tag, name] : names) out.printf("%d %d \"%s\"\n", dim, tag, name.c_str());
+  out.printf("$EndPhysicalNames\n$Nodes\n%d\n", mesh.nodeCount());
   for (int i = 0; i < mesh.nodeCount(); ++i) {
     const auto x = mesh.node(i);
-    std::fprintf(out, "%d %.17g %.17g %.17g\n", i + 1, x[0], x[1], x[2]);
+    out.printf("%d %.17g %.17g %.17g\n", i + 1, x[0], x[1], x[2]);
   }
   std::size_t lines = 0;
   for (const auto& groups : groupsOfCell) lines += std::max<std::size_t>(groups.size(), 1);
-  std::fprintf(out, "$EndNodes\n$Elements\n%zu\n", lines);
+  out.printf("$EndNodes\n$Elements\n%zu\n", lines);
   auto writeElement = [&](int tag, int c, int physical) {
     const CellType t = mesh.cellType(c);
-    std::fprintf(out, "%d %d 2 %d %d", tag, gmshElementType(t), physical, entityOfCell[c]);
+    out.printf("%d %d 2 %d %d", tag, gmshElementType(t), physical, entityOfCell[c]);
     const auto n = mesh.cellNodes(c);
     for (int k : fromAsterOrder(NodeConvention::Gmsh, t, std::vector<int>(n.begin(), n.end())))
-      std::fprintf(out, " %d", k + 1);
-    std::fputc('\n', out);
+      out.printf(" %d", k + 1);
+    out.put('\n');
   };
   for (int c = 0; c < mesh.cellCount(); ++c) {
     const int dim = topologicalDimension(mesh.cellType(c));
@@ -106,7 +99,7 @@ void writeMsh2(const Mesh& mesh, const std::string& path, const std::vector<Fiel
     for (std::size_t k = 1; k < groupsOfCell[c].size(); ++k)
       writeElement(++copy, c, physicalOf.at({dim, groupsOfCell[c][k]}));
   }
-  std::fprintf(out, "$EndElements\n");
+  out.printf("$EndElements\n");
 
   // Views by name (gmsh's order), each with one block per instant.
   std::map<std::string, std::vector<std::pair<int, View>>> steps;
@@ -115,16 +108,16 @@ void writeMsh2(const Mesh& mesh, const std::string& path, const std::vector<Fiel
       for (const View& v : viewsOf(f)) steps[v.name].emplace_back(static_cast<int>(s), v);
   for (const auto& [name, blocks] : steps)
     for (const auto& [step, view] : blocks) {
-      std::fprintf(out, "$NodeData\n1\n\"%s\"\n1\n%.17g\n3\n%d\n%d\n%d\n", name.c_str(), instants[step].time, step,
+      out.printf("$NodeData\n1\n\"%s\"\n1\n%.17g\n3\n%d\n%d\n%d\n", name.c_str(), instants[step].time, step,
                    view.width, mesh.nodeCount());
       for (int i = 0; i < mesh.nodeCount(); ++i) {
-        std::fprintf(out, "%d", i + 1);
-        for (int k = 0; k < view.width; ++k) std::fprintf(out, " %.17g", view.value(i, k));
-        std::fputc('\n', out);
+        out.printf("%d", i + 1);
+        for (int k = 0; k < view.width; ++k) out.printf(" %.17g", view.value(i, k));
+        out.put('\n');
       }
-      std::fprintf(out, "$EndNodeData\n");
+      out.printf("$EndNodeData\n");
     }
-  if (std::ferror(out) || std::fclose(file.release()) != 0) throw Error("cannot write " + path);
+  out.close();
 }
 
 }  // namespace aster::mesh

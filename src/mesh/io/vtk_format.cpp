@@ -1,9 +1,9 @@
 #include "mesh/io/vtk_format.hpp"
 
 #include <charconv>
-#include <fstream>
 #include <iomanip>
 
+#include "core/atomic_write.hpp"
 #include "core/error.hpp"
 #include "mesh/node_ordering.hpp"
 
@@ -58,8 +58,8 @@ void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<Nodal
     if (f.components.empty() || f.values.size() != f.components.size() * static_cast<std::size_t>(mesh.nodeCount()))
       throw Error("VTK writer: field '" + f.name + "' has " + std::to_string(f.values.size()) + " values, expected " +
                   std::to_string(mesh.nodeCount()) + " nodes x " + std::to_string(f.components.size()) + " components");
-  std::ofstream out(path);
-  if (!out) throw Error("cannot write the VTK file '" + path + "'");
+  OutputFile file(path);
+  std::ostream& out = file.stream();
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
       << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << mesh.nodeCount() << "\" NumberOfCells=\"" << mesh.cellCount()
       << "\">\n<PointData>\n";
@@ -98,18 +98,18 @@ void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<Nodal
   out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
   for (int c = 0; c < mesh.cellCount(); ++c) out << vtkType(mesh.cellType(c)) << "\n";
   out << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  if (!out) throw Error("error while writing the VTK file '" + path + "'");
+  file.close();
 }
 
 void writePvdCollection(const std::string& pvdPath, const std::vector<PvdEntry>& entries) {
-  std::ofstream out(pvdPath);
-  if (!out) throw Error("cannot write the VTK collection '" + pvdPath + "'");
+  OutputFile file(pvdPath);
+  std::ostream& out = file.stream();
   out << std::setprecision(16);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   for (const auto& e : entries)
     out << "<DataSet timestep=\"" << e.time << "\" part=\"0\" file=\"" << e.file << "\"/>\n";
   out << "</Collection>\n</VTKFile>\n";
-  if (!out) throw Error("error while writing the VTK collection '" + pvdPath + "'");
+  file.close();
 }
 
 void writePvd(const Mesh& mesh, const std::string& pvdPath, const std::vector<FieldInstant>& instants) {

@@ -1,0 +1,12 @@
+-- The square of many_instants.lua with 3 instants: run first into a folder
+-- that one_instant.lua then reuses (outputs_test.sh stale).
+MAIL = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
+MODELE = AFFE_MODELE{MAILLAGE = MAIL, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
+MAT = DEFI_MATERIAU{ELAS = {E = 1.0, NU = 0.3}}
+CHMAT = AFFE_MATERIAU{MAILLAGE = MAIL, AFFE = {TOUT = 'OUI', MATER = MAT}}
+CHARGE = AFFE_CHAR_CINE{MODELE = MODELE, MECA_IMPO = {{GROUP_MA = 'BAS', DX = 0.0, DY = 0.0},
+                                                      {GROUP_MA = 'HAUT', DY = 0.01}}}
+LINST = DEFI_LIST_REEL{DEBUT = 0.0, INTERVALLE = {JUSQU_A = 1.0, NOMBRE = 3}}
+RESU = STAT_NON_LINE{MODELE = MODELE, CHAM_MATER = CHMAT, EXCIT = {CHARGE = CHARGE},
+                     INCREMENT = {LIST_INST = LINST}}
+FIN{}
