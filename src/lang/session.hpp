@@ -30,6 +30,9 @@ struct Session {
   // Concepts a macro-command created under names given with CO('name'):
   // the interpreter binds each to a global variable of the study after the call.
   std::vector<std::pair<std::string, ConceptPtr>> produced;
+  // Concepts DETRUIRE destroyed: the interpreter unbinds the study's variables
+  // that hold them after the call.
+  std::vector<ConceptPtr> destroyed;
 
   // TEST_RESU and friends: counts, and the lines of <output-dir>/<study>.resu.
   int checksOk = 0;
