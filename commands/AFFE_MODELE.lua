@@ -13,6 +13,6 @@ return OPER{ nom = 'AFFE_MODELE', sd_prod = 'modele_sdaster', reentrant = 'n',
     },
   },
   SIMP{ 'VERI_JACOBIEN', typ = 'TXM', defaut = 'OUI', into = {'OUI', 'NON'},
-        fr = "Check that the Jacobian of each cell keeps its sign (no inverted cells)." },
+        fr = "OUI: a fatal error naming the cells whose Jacobian is not positive at every Gauss point (inverted: nodes clockwise; distorted: sign change; degenerate: zero), which the elements cannot integrate; NON: no check." },
   SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
 }

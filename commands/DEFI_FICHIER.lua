@@ -18,7 +18,7 @@ return PROC{ nom = 'DEFI_FICHIER',
   BLOC{ 'b_liberer', condition = { ACTION = 'LIBERER' },
     regles = { UN_PARMI('UNITE', 'FICHIER') },
     SIMP{ 'UNITE', typ = 'I', val_min = 1, fr = "Logical unit to release." },
-    SIMP{ 'FICHIER', typ = 'TXM', fr = "File whose unit is released." },
+    SIMP{ 'FICHIER', typ = 'TXM', fr = "File whose units are released (every unit bound to it)." },
   },
   SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
 }

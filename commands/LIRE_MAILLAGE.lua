@@ -9,8 +9,10 @@ return OPER{ nom = 'LIRE_MAILLAGE', sd_prod = 'maillage_sdaster', reentrant = 'n
     SIMP{ 'INFO_MED', typ = 'I', defaut = 1, into = {1, 2, 3}, fr = "Verbosity of the MED reader." },
   },
   FACT{ 'VERI_MAIL', statut = 'd', fr = "Checks of the mesh after reading.",
-    SIMP{ 'VERIF', typ = 'TXM', defaut = 'OUI', into = {'OUI', 'NON'}, fr = "Check the mesh (degenerate cells, orphan nodes)." },
-    SIMP{ 'APLAT', typ = 'R', defaut = 1.0e-3, val_min = 0.0, fr = "Flatness ratio below which a cell is reported as degenerate." },
+    SIMP{ 'VERIF', typ = 'TXM', defaut = 'OUI', into = {'OUI', 'NON'},
+          fr = "OUI: an alarm naming the orphan nodes, the cells with the same nodes as another and the flattened cells (APLAT), a fatal error naming the cells with a node repeated in their connectivity; NON: none of these (coordinates that are not finite numbers are always a fatal error)." },
+    SIMP{ 'APLAT', typ = 'R', defaut = 1.0e-3, val_min = 0.0,
+          fr = "A cell whose smallest distance between two of its nodes is below APLAT times the largest is reported as flattened." },
   },
   SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity: 2 prints the mesh summary." },
 }

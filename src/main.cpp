@@ -97,6 +97,21 @@ int main(int argc, char** argv) {
   }
   if (study.empty()) return usageError("no study file given");
   if (!fs::exists(study)) return usageError("the study file " + study + " does not exist");
+  {
+    // A directory would read as an empty study (exit 0, nothing done), a FIFO
+    // would block: only a regular file (or a link to one) is a study.
+    std::error_code ec;
+    const auto type = fs::status(study, ec).type();
+    if (type != fs::file_type::regular) {
+      const char* kind = type == fs::file_type::directory   ? "a directory"
+                         : type == fs::file_type::fifo      ? "a FIFO"
+                         : type == fs::file_type::character ? "a character device"
+                         : type == fs::file_type::block     ? "a block device"
+                         : type == fs::file_type::socket    ? "a socket"
+                                                            : "not a regular file";
+      return usageError("the study file " + study + " is " + kind + ", not a regular file holding a study");
+    }
+  }
 
   aster::Messages::setQuiet(quiet);
   aster::interrupt::install();

@@ -8,6 +8,7 @@
 #include "lang/operators.hpp"
 #include "mesh/io/aster_format.hpp"
 #include "mesh/io/gmsh_format.hpp"
+#include "mesh/mesh_check.hpp"
 #if __has_include("mesh/io/med_format.hpp")
 #include "mesh/io/med_format.hpp"
 #define ASTER_HAS_MED 1
@@ -37,6 +38,19 @@ ConceptPtr lireMaillage(const Keywords& k, Session& session, ConceptPtr) {
 #else
     throw Error("FORMAT='MED': this build of aster-lite has no MED library (install libmedc-dev and rebuild)");
 #endif
+  }
+  // Whatever the format: a NaN or an infinity would surface later as a wrong
+  // or misleading message.
+  try {
+    mesh::checkFiniteCoordinates(*m);
+  } catch (const Error& e) {
+    throw Error(path.string() + ": " + e.what());
+  }
+  const Keywords& veri = k.factor("VERI_MAIL").front();
+  if (veri.text("VERIF") == "OUI") {
+    const auto defects = mesh::findDefects(*m, veri.real("APLAT"));
+    for (const auto& a : defects.alarms) Messages::alarm("LIRE_MAILLAGE", session.where + ": " + path.string() + ": " + a);
+    if (!defects.fatal.empty()) throw Error(path.string() + ": " + defects.fatal);
   }
   if (k.integer("INFO") >= 1) Messages::info(m->summary());
   return std::make_shared<MeshConcept>(m);

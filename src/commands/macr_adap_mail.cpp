@@ -2,6 +2,9 @@
 // (ADAPTATION='RAFFINEMENT_UNIFORME'): every 2D cell of GROUP_MA (all of them
 // when absent) is split in 4, the boundary segments on split edges in 2. The new
 // mesh is returned and bound to the name given with MAILLAGE_NP1=CO('name').
+// Groups of cells list the children; a group of nodes follows the group of
+// cells with exactly its nodes, and one that cannot be followed stops the
+// command (mesh/refine.hpp).
 #include <set>
 #include <string>
 #include <vector>

@@ -28,6 +28,7 @@ struct Interpreter::State {
   Session* session = nullptr;
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
   std::map<std::string, std::vector<std::string>> sources;  // lines of each chunk run, by chunk name
+  std::map<std::string, std::string> destroyed;  // variable unbound by DETRUIRE -> where
 };
 
 namespace {
@@ -58,6 +59,30 @@ void pushConcept(lua_State* L, ConceptPtr c) {
 
 ConceptBox* toConcept(lua_State* L, int idx) {
   return static_cast<ConceptBox*>(luaL_testudata(L, idx, kConceptMeta));
+}
+
+// Throws when the study uses a concept DETRUIRE destroyed.
+void checkNotDestroyed(const Concept& c) {
+  if (!c.destroyedAt.empty()) throw Error("'" + c.name + "' was destroyed by DETRUIRE at " + c.destroyedAt);
+}
+
+// Unbinds the global variables holding c (a local keeps it, marked destroyed);
+// the concept's memory goes with the last holder.
+void unbindDestroyed(lua_State* L, const Concept& c) {
+  std::vector<std::string> names;
+  lua_pushglobaltable(L);
+  lua_pushnil(L);
+  while (lua_next(L, -2)) {
+    if (lua_type(L, -2) == LUA_TSTRING)
+      if (auto* box = toConcept(L, -1); box && box->ptr.get() == &c) names.push_back(lua_tostring(L, -2));
+    lua_pop(L, 1);
+  }
+  for (const auto& name : names) {
+    lua_pushnil(L);
+    lua_setfield(L, -2, name.c_str());
+    stateOf(L).destroyed[name] = c.destroyedAt;
+  }
+  lua_pop(L, 1);
 }
 
 // A study function handed to a kernel (FORMULE{VALE=function(X, Y) ... end}).
@@ -113,7 +138,10 @@ Value toValue(lua_State* L, int idx) {
     case LUA_TFUNCTION:
       return Value::ofFunction(std::make_shared<LuaCallable>(L, idx, stateOf(L).alive));
     case LUA_TUSERDATA:
-      if (auto* box = toConcept(L, idx)) return Value::ofConcept(box->ptr);
+      if (auto* box = toConcept(L, idx)) {
+        checkNotDestroyed(*box->ptr);
+        return Value::ofConcept(box->ptr);
+      }
       if (auto* co = static_cast<NewNameBox*>(luaL_testudata(L, idx, kNewNameMeta))) return Value::ofNewName(co->name);
       return Value::other("an unknown userdata");
     case LUA_TTABLE: return Value::other("a table");
@@ -283,6 +311,12 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
       lua_setglobal(L, name.c_str());
     }
     session.produced.clear();
+    for (const auto& c : session.destroyed) unbindDestroyed(L, *c);
+    if (!session.destroyed.empty()) {  // what DETRUIRE is for: free the memory now
+      lua_settop(L, 0);                 // the call's own table still holds the concepts
+      lua_gc(L, LUA_GCCOLLECT);
+    }
+    session.destroyed.clear();
     if (!result) {
       if (spec.kind == CommandSpec::Kind::Oper) throw Error("internal error: the operator returned no concept");
       return 0;
@@ -372,6 +406,7 @@ int methodImpl(lua_State* L, const std::string& method) {
   const std::string where = callSite(L);
   try {
     if (!self) throw Error("method " + method + " must be called with ':' (object:" + method + "(...))");
+    checkNotDestroyed(*self->ptr);
     const Method* m = Operators::instance().findMethod(self->ptr->typeName(), method);
     if (!m) throw Error("internal error: method " + method + " vanished");
     std::vector<Value> args;
@@ -395,6 +430,11 @@ int callMethod(lua_State* L) {
 int conceptIndexImpl(lua_State* L) {
   ConceptBox* self = toConcept(L, 1);
   const char* key = lua_tostring(L, 2);
+  if (!self->ptr->destroyedAt.empty()) {
+    pushFatal(L, fatalText(self->ptr->name, callSite(L),
+                           "'" + self->ptr->name + "' was destroyed by DETRUIRE at " + self->ptr->destroyedAt));
+    return -1;
+  }
   const std::string type = self->ptr->typeName();
   if (key && Operators::instance().findMethod(type, key)) {
     lua_pushstring(L, key);
@@ -454,6 +494,11 @@ int undefinedGlobalImpl(lua_State* L) {
     lua_pop(L, 1);
   }
   const std::string name = key ? key : "?";
+  const auto& destroyed = stateOf(L).destroyed;
+  if (const auto it = destroyed.find(name); it != destroyed.end()) {
+    pushFatal(L, "<F> <LUA> " + callSite(L) + ": '" + name + "' was destroyed by DETRUIRE at " + it->second);
+    return -1;
+  }
   pushFatal(L, "<F> <LUA> " + callSite(L) + ": '" + name + "' is not defined" +
                    (didYouMean(name, names).empty() ? std::string(": it is neither a command of the catalogue nor a variable")
                                                     : ";" + didYouMean(name, names)));

@@ -31,6 +31,9 @@ struct Session {
   // Concepts a macro-command created under names given with CO('name'):
   // the interpreter binds each to a global variable of the study after the call.
   std::vector<std::pair<std::string, ConceptPtr>> produced;
+  // Concepts DETRUIRE destroyed: the interpreter unbinds the study's variables
+  // that hold them after the call.
+  std::vector<ConceptPtr> destroyed;
 
   // The files of the run: those the study read (LIRE_MAILLAGE, DEFI_FICHIER
   // ACCES='OLD', the study itself), which are never written over, and those it wrote.

@@ -1,10 +1,12 @@
 #include "mesh/refine.hpp"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <unordered_set>
 
 #include "core/error.hpp"
+#include "mesh/group_ops.hpp"
 
 namespace aster::mesh {
 
@@ -131,7 +133,7 @@ class Refiner {
       for (int c : in_.cellGroup(g)) members.insert(members.end(), newCells[c].begin(), newCells[c].end());
       out_.addCellGroup(g, std::move(members));
     }
-    for (const auto& g : in_.nodeGroupNames()) out_.addNodeGroup(g, in_.nodeGroup(g));
+    refineNodeGroups();
     return std::move(out_);
   }
 
@@ -150,7 +152,7 @@ class Refiner {
     const auto k = key(a, b);
     const auto it = mid_.find(k);
     if (it != mid_.end()) return it->second;
-    const int n = out_.addNode(map(t, nodes, 0.5 * (pa + pb)));
+    const int n = newNode(map(t, nodes, 0.5 * (pa + pb)), {a, b});
     mid_.emplace(k, n);
     return n;
   }
@@ -170,7 +172,7 @@ class Refiner {
         const int j = (i + 1) % nv;
         if ((0.5 * (ref[i] + ref[j]) - p).norm() < 1e-12) return middle(nodes[i], nodes[j], t, nodes, ref[i], ref[j]);
       }
-      if (centre < 0) centre = out_.addNode(map(t, nodes, p));
+      if (centre < 0) centre = newNode(map(t, nodes, p), std::vector<int>(cn.begin(), cn.end()));
       return centre;
     };
     std::vector<std::pair<CellType, std::vector<int>>> out;
@@ -187,7 +189,7 @@ class Refiner {
         if (t == CellType::QUAD9) {
           Ref m = Ref::Zero();
           for (const auto& p : pts) m += 0.25 * p;
-          child.push_back(out_.addNode(map(t, nodes, m)));
+          child.push_back(newNode(map(t, nodes, m), child));
         }
       }
       out.emplace_back(t, std::move(child));
@@ -211,9 +213,108 @@ class Refiner {
     return {};
   }
 
+  // A node the refinement creates, with the nodes it lies between: the two
+  // ends of the edge it halves, or every node of the cell whose centre it is.
+  int newNode(const Eigen::Vector3d& x, std::vector<int> between) {
+    between_.push_back(std::move(between));
+    return out_.addNode(x);
+  }
+
+  static std::vector<int> sortedSet(std::vector<int> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  }
+
+  // The nodes of the segments of cell group `group` of `mesh` in chain order
+  // from `first` (as DEFI_GROUP's NOEUD_ORDO gives), or empty when they form
+  // no open chain with `first` at an end.
+  static std::vector<int> chainFrom(const Mesh& mesh, const std::string& group, int first) {
+    try {
+      return orderedChainNodes(mesh, mesh.cellGroup(group), first);
+    } catch (const Error&) {
+      return {};
+    }
+  }
+
+  // Node groups follow the cells they were made from. A group whose nodes are
+  // exactly those of a group of cells becomes the nodes of that group's refined
+  // cells (in chain order when it was the ordered chain of those segments,
+  // else its old nodes in their order, then the new ones). A group no new node
+  // lies between (points, scattered nodes) is kept as it is. Any other group is
+  // ambiguous: which new nodes belong to it cannot be told from its nodes
+  // (HOMARD, code_aster's refinement tool, keeps only their old nodes and asks
+  // for boundary conditions on cells): the refinement stops naming it.
+  void refineNodeGroups() {
+    if (in_.nodeGroupNames().empty()) return;
+    const auto cellGroups = in_.cellGroupNames();
+    std::vector<std::vector<int>> nodesOfGroup(cellGroups.size());
+    for (std::size_t k = 0; k < cellGroups.size(); ++k)
+      nodesOfGroup[k] = sortedSet(in_.nodesOfCells(in_.cellGroup(cellGroups[k])));
+    std::vector<std::string> ambiguous;
+    for (const auto& g : in_.nodeGroupNames()) {
+      const std::vector<int>& nodes = in_.nodeGroup(g);
+      const std::vector<int> set = sortedSet(nodes);
+      std::vector<std::size_t> sources;
+      if (!set.empty())
+        for (std::size_t k = 0; k < cellGroups.size(); ++k)
+          if (nodesOfGroup[k] == set) sources.push_back(k);
+      if (!sources.empty()) {
+        const std::string& source = cellGroups[sources[0]];
+        const std::vector<int> refined = sortedSet(out_.nodesOfCells(out_.cellGroup(source)));
+        std::string disagreeing;
+        for (std::size_t k = 1; k < sources.size() && disagreeing.empty(); ++k)
+          if (sortedSet(out_.nodesOfCells(out_.cellGroup(cellGroups[sources[k]]))) != refined)
+            disagreeing = cellGroups[sources[k]];
+        if (!disagreeing.empty()) {
+          ambiguous.push_back("'" + g + "' has exactly the nodes of the groups of cells '" + source + "' and '" +
+                              disagreeing + "', whose refined cells have different nodes");
+          continue;
+        }
+        std::vector<int> members;
+        if (nodes.size() > 1 && chainFrom(in_, source, nodes[0]) == nodes) {
+          members = chainFrom(out_, source, nodes[0]);
+        } else {
+          members = nodes;
+          for (int n : refined)
+            if (n >= in_.nodeCount()) members.push_back(n);
+        }
+        out_.addNodeGroup(g, std::move(members));
+        continue;
+      }
+      // No group of cells to follow: is some new node between nodes of g?
+      std::vector<char> in(out_.nodeCount(), 0);
+      for (int n : nodes) in[n] = 1;
+      int example = -1;
+      for (int n = in_.nodeCount(); n < out_.nodeCount() && example < 0; ++n) {
+        const auto& between = between_[n - in_.nodeCount()];
+        in[n] = std::all_of(between.begin(), between.end(), [&](int b) { return in[b] != 0; });
+        if (in[n]) example = n;
+      }
+      if (example < 0) {
+        out_.addNodeGroup(g, nodes);
+        continue;
+      }
+      std::string around;
+      for (int b : between_[example - in_.nodeCount()]) around += (around.empty() ? "" : ", ") + out_.nodeName(b);
+      ambiguous.push_back("'" + g + "': the new node " + out_.nodeName(example) + " lies between its nodes " + around +
+                          " and no group of cells has exactly its nodes");
+    }
+    if (!ambiguous.empty()) {
+      std::string list;
+      for (const auto& a : ambiguous) list += (list.empty() ? "" : "; ") + a;
+      throw Error("GROUP_NO " + list +
+                  ". Which new nodes belong to such a group of nodes cannot be told: define it from cells (a "
+                  "GROUP_MA with exactly its nodes, which it then follows; or, on the refined mesh, DEFI_GROUP "
+                  "CREA_GROUP_NO from a GROUP_MA, or the GROUP_MA itself in the loads), or delete it before "
+                  "refining (DEFI_GROUP DETR_GROUP_NO)");
+    }
+  }
+
   const Mesh& in_;
   Mesh out_;
   std::map<std::pair<int, int>, int> mid_;
+  std::vector<std::vector<int>> between_;  // of each new node, by index - in_.nodeCount()
 };
 
 }  // namespace

@@ -90,6 +90,39 @@ TEST(Interpreter, ErrorInsideAStudyFunctionPointsAtTheCall) {
   EXPECT_EQ(r.err.rfind("<F> <DEBUT> etude.lua:2:", 0), 0u) << r.err;
 }
 
+// DETRUIRE destroys: the variables holding the concept are unbound (the box is
+// collected: a weak table loses it), the name can be reused, and any use of
+// the concept, by its old name or through another variable, is a <F> that says
+// where it was destroyed.
+TEST(Interpreter, DetruireUnbindsTheConceptAndRefusesItsUse) {
+  StudyRun r = run(
+      "MAT = DEFI_MATERIAU{ELAS = {E = 1.0, NU = 0.3}}\n"
+      "B = DEFI_MATERIAU{ELAS = {E = 2.0, NU = 0.3}}\n"
+      "local weak = setmetatable({B}, {__mode = 'v'})\n"
+      "DETRUIRE{CONCEPT = {NOM = {MAT, B}}}\n"
+      "print(rawget(_G, 'MAT'), rawget(_G, 'B'), weak[1])\n"
+      "MAT = DEFI_MATERIAU{ELAS = {E = 3.0, NU = 0.3}}\n"
+      "print(MAT)\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "nil\tnil\tnil\n<mater_sdaster MAT>\n");
+  r = run("MAT = DEFI_MATERIAU{ELAS = {E = 1.0, NU = 0.3}}\nDETRUIRE{NOM = MAT}\n"
+          "local m = MAT\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <LUA> etude.lua:3: 'MAT' was destroyed by DETRUIRE at etude.lua:2\n");
+  r = run("F = DEFI_FONCTION{NOM_PARA = 'INST', VALE = {0, 0, 1, 1}}\nlocal G = F\nDETRUIRE{NOM = F}\n"
+          "DETRUIRE{NOM = G}\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <DETRUIRE> etude.lua:4: 'F' was destroyed by DETRUIRE at etude.lua:3\n");
+  r = run("F = DEFI_FONCTION{NOM_PARA = 'INST', VALE = {0, 0, 1, 1}}\nlocal G = F\nDETRUIRE{NOM = F}\n"
+          "print(G(0.5))\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <F:__call> etude.lua:4: 'F' was destroyed by DETRUIRE at etude.lua:3\n");
+  r = run("F = DEFI_FONCTION{NOM_PARA = 'INST', VALE = {0, 0, 1, 1}}\nlocal G = F\nDETRUIRE{NOM = F}\n"
+          "print(G:getParameters())\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <F> etude.lua:4: 'F' was destroyed by DETRUIRE at etude.lua:3\n");
+}
+
 TEST(Interpreter, StudiesRunSandboxed) {
   StudyRun r = run("assert(os.execute == nil and io.popen == nil and package.loadlib == nil)\n"
                    "local f, err = load(string.dump(function() return 1 end))\n"
