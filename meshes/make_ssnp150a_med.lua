@@ -1,7 +1,7 @@
 -- Makes ssnp150a.med, the mesh of SSNP150 version A: ssnp150.geo meshed by gmsh
 -- with its default N = 16 (a 16 x 16 grid of QUAD8 on the unit square, its four
 -- edges as SEG3 groups BAS, DROITE, HAUT, GAUCHE, and the rigid master MAITRE).
--- Run: aster-lite -u 20=meshes/ssnp150.geo -u 80=ssnp150a.med meshes/make_ssnp150a_med.lua
+-- Run: aster-lite --unsafe-lua -u 20=meshes/ssnp150.geo -u 80=ssnp150a.med meshes/make_ssnp150a_med.lua
 DEBUT{}
 
 MAIL = LIRE_MAILLAGE{FORMAT = 'GMSH', UNITE = 20}

@@ -27,13 +27,15 @@ const char* kUsage =
     "                    (default: a folder named after the study, next to it)\n"
     "  -u N=PATH         bind file PATH to logical unit N (as DEFI_FICHIER does)\n"
     "  --quiet           print only alarms, errors and check results\n"
-    "  --unsafe-lua      give the study os.execute, io.popen, binary chunks and C modules\n"
+    "  --unsafe-lua      lift the Lua sandbox: give the study plain Lua (os.execute,\n"
+    "                    io.popen, the debug library, binary chunks, C modules, files\n"
+    "                    written anywhere) and let gmsh run .geo scripts\n"
     "  --doc FILE        write the command reference (Markdown) to FILE and exit\n"
     "  --version         print the version and exit\n"
     "  --help            print this help and exit\n"
     "\n"
     "exit status: 0 the study ran and every check was OK, 1 a check was NOOK,\n"
-    "             2 a fatal error (<F>) stopped the study,\n"
+    "             2 a fatal error (<F>) stopped the study (or was caught by it),\n"
     "             130 Ctrl-C stopped it (converged instants are on disk)\n";
 
 int usageError(const std::string& what) {

@@ -88,13 +88,32 @@ std::string number(double v) {
   return buf;
 }
 
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char ch : s) {
-    if (ch == '"' || ch == '\\') out += '\\';
-    out += ch;
+// A gnuplot string expression whose value is `s`, character for character.
+// Texts and paths come from the study: in a double-quoted gnuplot string, `...`
+// runs a shell command, so the text goes in single quotes (no substitution at
+// all; '' is a quote), and the control characters a single-quoted string cannot
+// hold (a newline ends the command) are octal escapes in double quotes,
+// concatenated: ('line 1' . "\012" . 'line 2').
+std::string gnuplotString(const std::string& s) {
+  std::vector<std::string> pieces;
+  std::string text;
+  for (const char ch : s) {
+    const auto byte = static_cast<unsigned char>(ch);
+    if (byte >= 0x20 && byte != 0x7f) {
+      text += ch == '\'' ? std::string("''") : std::string(1, ch);
+      continue;
+    }
+    if (!text.empty()) pieces.push_back("'" + text + "'");
+    text.clear();
+    char escape[8];
+    std::snprintf(escape, sizeof escape, "\"\\%03o\"", byte);
+    pieces.push_back(escape);
   }
-  return out + "\"";
+  if (!text.empty() || pieces.empty()) pieces.push_back("'" + text + "'");
+  if (pieces.size() == 1) return pieces[0];
+  std::string expression = "(" + pieces[0];
+  for (std::size_t i = 1; i < pieces.size(); ++i) expression += " . " + pieces[i];
+  return expression + ")";
 }
 
 std::string findProgram(const std::string& name) {
@@ -111,7 +130,7 @@ std::string findProgram(const std::string& name) {
 // Runs gnuplot on the scripts, in order; true when it exits with status 0.
 bool runGnuplot(const std::string& exe, const std::vector<std::filesystem::path>& scripts, bool showMessages) {
   std::vector<std::string> args{exe};
-  for (const auto& s : scripts) args.push_back(s.string());
+  for (const auto& s : scripts) args.push_back(std::filesystem::absolute(s).string());  // never taken for an option
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -216,12 +235,13 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   std::ostringstream gp;
   gp << "reset session\n";  // the scripts of a run are drawn by one gnuplot, one after the other
   gp << "set terminal " << (format == "PNG" ? "pngcairo" : "svg") << " size 900,650 noenhanced font 'Sans,11'\n";
-  gp << "set output " << quoted(std::filesystem::absolute(image).string()) << "\n";
+  // Paths absolute: gnuplot takes a file name starting with '|' or '<' for a command.
+  gp << "set output " << gnuplotString(std::filesystem::absolute(image).string()) << "\n";
   std::string title = k.text("TITRE", "");
   if (k.has("SOUS_TITRE")) title += (title.empty() ? "" : "\n") + k.text("SOUS_TITRE");
-  if (!title.empty()) gp << "set title " << quoted(title) << "\n";
-  if (k.has("LEGENDE_X")) gp << "set xlabel " << quoted(k.text("LEGENDE_X")) << "\n";
-  if (k.has("LEGENDE_Y")) gp << "set ylabel " << quoted(k.text("LEGENDE_Y")) << "\n";
+  if (!title.empty()) gp << "set title " << gnuplotString(title) << "\n";
+  if (k.has("LEGENDE_X")) gp << "set xlabel " << gnuplotString(k.text("LEGENDE_X")) << "\n";
+  if (k.has("LEGENDE_Y")) gp << "set ylabel " << gnuplotString(k.text("LEGENDE_Y")) << "\n";
   if (k.text("ECHELLE_X", "LIN") == "LOG") gp << "set logscale x\n";
   if (k.text("ECHELLE_Y", "LIN") == "LOG") gp << "set logscale y\n";
   if (k.has("BORNE_X")) gp << "set xrange [" << number(k.reals("BORNE_X")[0]) << ":" << number(k.reals("BORNE_X")[1]) << "]\n";
@@ -238,12 +258,12 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
     session.writeFile(data, [&](const std::filesystem::path& tmp) { writeTextFile(tmp, values); });
     const auto& c = curves[i];
     const bool line = c.style != 0, points = c.marker != 0;
-    gp << (i ? ", \\\n     " : "") << quoted(std::filesystem::absolute(data).string()) << " using 1:2 with "
+    gp << (i ? ", \\\n     " : "") << gnuplotString(std::filesystem::absolute(data).string()) << " using 1:2 with "
        << (line && points ? "linespoints" : line ? "lines" : "points");
     if (c.colour > 0) gp << " linecolor " << c.colour;
     if (points && c.marker > 0) gp << " pointtype " << c.marker;
     if (line && c.style > 1) gp << " dashtype " << c.style;
-    gp << " linewidth 2 title " << quoted(c.legend.empty() ? "courbe " + std::to_string(i + 1) : c.legend);
+    gp << " linewidth 2 title " << gnuplotString(c.legend.empty() ? "courbe " + std::to_string(i + 1) : c.legend);
   }
   gp << "\nunset output\n";  // closes the image before the next script opens its own
   const auto script = dir / (stem + ".gp");

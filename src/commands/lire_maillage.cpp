@@ -1,5 +1,8 @@
 // LIRE_MAILLAGE: reads a mesh from the file bound to UNITE (default unit 20:
 // the study's name with the format's extension).
+// gmsh runs the commands of scripts (.geo, an .opt beside the mesh): a study in
+// the Lua sandbox reads .msh files only (mesh::gmshScriptRisk).
+#include <cctype>
 #include <filesystem>
 
 #include "commands/mesh_concept.hpp"
@@ -31,7 +34,17 @@ ConceptPtr lireMaillage(const Keywords& k, Session& session, ConceptPtr) {
   if (format == "ASTER") {
     *m = mesh::readAsterMesh(path.string());
   } else if (format == "GMSH") {
-    *m = mesh::readGmshMesh(path.string());
+    mesh::GmshReadOptions options;
+    options.scripts = session.unsafeLua;  // gmsh scripts run commands: not in the Lua sandbox
+    const std::string risk = options.scripts ? std::string() : mesh::gmshScriptRisk(path.string());
+    if (!risk.empty()) {
+      std::string ext = path.extension().string();
+      for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      throw Error("UNITE=" + std::to_string(unit) + ": " + path.string() + " is " + risk +
+                  "; a sandboxed study does not hand it to gmsh (aster-lite --unsafe-lua does" +
+                  (ext == ".geo" ? "; or mesh it beforehand, gmsh -2 FILE.geo -o FILE.msh, and read the .msh)" : ")"));
+    }
+    *m = mesh::readGmshMesh(path.string(), options);
   } else {
 #ifdef ASTER_HAS_MED
     *m = mesh::readMedMesh(path.string(), k.text("NOM_MED", ""));

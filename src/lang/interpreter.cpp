@@ -3,12 +3,21 @@
 #include <lua.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
+#include <thread>
+#include <type_traits>
 
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
@@ -29,6 +38,22 @@ struct Interpreter::State {
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
   std::map<std::string, std::vector<std::string>> sources;  // lines of each chunk run, by chunk name
   std::map<std::string, std::string> destroyed;  // variable unbound by DETRUIRE -> where
+
+  // Every <F> raised during the run, in order (the first kKeptFatals): one the
+  // study catches (pcall, a coroutine) still ends the run with exit status 2.
+  std::vector<std::string> fatals;
+  std::size_t fatalCount = 0;
+  // A stop the study cannot catch: FIN or os.exit() (Finish), os.exit(failure)
+  // (Abort), Ctrl-C (Interrupt). Once set, the hook raises it again at every
+  // instruction until the study is unwound.
+  enum class Stop { None, Finish, Abort, Interrupt } stop = Stop::None;
+  std::string stopMessage;  // the <F> of an Abort or an Interrupt
+  // Sandbox: files the study's Lua code read (its inputs, never written from
+  // Lua) and wrote (its own, which it may read back and rewrite), canonical.
+  std::set<std::string> readFiles, writtenFiles;
+  // Who ends the run: 1 the interpreter, 2 the watchdog (the study stuck after Ctrl-C).
+  std::atomic<int> ending{0};
+  std::function<void()> endFromWatchdog;
 };
 
 namespace {
@@ -36,6 +61,7 @@ namespace {
 const char* kConceptMeta = "aster.concept";
 const char* kNewNameMeta = "aster.co";
 const char* kStateKey = "aster.state";
+using State = Interpreter::State;
 
 Interpreter::State& stateOf(lua_State* L) {
   lua_getfield(L, LUA_REGISTRYINDEX, kStateKey);
@@ -44,22 +70,34 @@ Interpreter::State& stateOf(lua_State* L) {
   return *s;
 }
 
+// The userdata behind concepts and CO() names. Their metamethods can be called
+// by hand on any value (getmetatable is protected, but --unsafe-lua has
+// debug.getmetatable and debug.setmetatable), so a box is trusted only with its
+// metatable, its size and a live tag; __gc leaves an empty, dead box behind.
+constexpr std::uint32_t kLiveBox = 0x61737472;  // "astr"
 struct ConceptBox {
+  std::uint32_t tag = 0;
   ConceptPtr ptr;
 };
 struct NewNameBox {
+  std::uint32_t tag = 0;
   std::string name;
 };
 
+template <class Box>
+Box* liveBox(lua_State* L, int idx, const char* meta) {
+  auto* box = static_cast<Box*>(luaL_testudata(L, idx, meta));
+  if (!box || lua_rawlen(L, idx) != sizeof(Box) || box->tag != kLiveBox) return nullptr;
+  return box;
+}
+
 void pushConcept(lua_State* L, ConceptPtr c) {
   void* mem = lua_newuserdatauv(L, sizeof(ConceptBox), 0);
-  new (mem) ConceptBox{std::move(c)};
+  new (mem) ConceptBox{kLiveBox, std::move(c)};
   luaL_setmetatable(L, kConceptMeta);
 }
 
-ConceptBox* toConcept(lua_State* L, int idx) {
-  return static_cast<ConceptBox*>(luaL_testudata(L, idx, kConceptMeta));
-}
+ConceptBox* toConcept(lua_State* L, int idx) { return liveBox<ConceptBox>(L, idx, kConceptMeta); }
 
 // Throws when the study uses a concept DETRUIRE destroyed.
 void checkNotDestroyed(const Concept& c) {
@@ -97,21 +135,35 @@ class LuaCallable : public ScalarCallable {
   }
   double call(const double* args, int count) const override {
     if (!*alive_) throw Error("the study's Lua function is no longer available");
+    const interrupt::Watch watched(true);  // the study's code again, called by a kernel
     lua_rawgeti(L_, LUA_REGISTRYINDEX, ref_);
     for (int i = 0; i < count; ++i) lua_pushnumber(L_, args[i]);
     if (lua_pcall(L_, count, 1, 0) != LUA_OK) {
       std::string msg = "(error object is not a string)";
+      bool interrupted = false, finished = false;
       if (lua_isstring(L_, -1)) {
         msg = lua_tostring(L_, -1);
       } else if (lua_istable(L_, -1)) {  // an aster-lite error raised inside the function
-        lua_getfield(L_, -1, "aster_fatal");
+        lua_getfield(L_, -1, "aster_interrupted");
+        interrupted = lua_toboolean(L_, -1);
+        lua_getfield(L_, -2, "aster_fin");
+        finished = lua_toboolean(L_, -1);
+        lua_getfield(L_, -3, "aster_fatal");
         if (lua_isstring(L_, -1)) {
           msg = lua_tostring(L_, -1);
+          // It goes on as the <F> of the command that called the function, not as one of its own.
+          auto& fatals = stateOf(L_).fatals;
+          if (!interrupted && !fatals.empty() && fatals.back() == msg) {
+            fatals.pop_back();
+            --stateOf(L_).fatalCount;
+          }
           if (msg.rfind("<F> <", 0) == 0 && msg.find("> ", 5) != std::string::npos) msg.erase(0, msg.find("> ", 5) + 2);
         }
-        lua_pop(L_, 1);
+        lua_pop(L_, 3);
       }
       lua_pop(L_, 1);
+      if (interrupted) throw Interrupted("interrupted (SIGINT) in the study's Lua function");
+      if (finished) throw StudyFinished{};
       throw Error("the study's Lua function failed: " + msg);
     }
     int isnum = 0;
@@ -232,9 +284,11 @@ Keywords toKeywords(lua_State* L, int idx, const std::string& path) {
   return kw;
 }
 
-std::string callSite(lua_State* L) {
+// The study's file:line of the innermost Lua function at or above `level`
+// (1: the caller of the C function running; 0 in a hook: the function running).
+std::string callSite(lua_State* L, int level = 1) {
   lua_Debug ar;
-  for (int level = 1; lua_getstack(L, level, &ar); ++level) {
+  for (; lua_getstack(L, level, &ar); ++level) {
     lua_getinfo(L, "Sl", &ar);
     if (ar.currentline <= 0) continue;
     // The study's path as given (short_src would cut a long path with "...").
@@ -259,11 +313,63 @@ std::string assignedName(lua_State* L, const std::string& command) {
   return std::regex_search(line, m, assignment) ? m[1].str() : "";
 }
 
-// Error objects carried through lua_error to the top level.
+// Error objects carried through lua_error to the top level. Every <F> is
+// recorded: the study may catch it (pcall), the run still ends with exit status 2.
+constexpr std::size_t kKeptFatals = 20;
 void pushFatal(lua_State* L, const std::string& message) {
+  State& st = stateOf(L);
+  ++st.fatalCount;
+  if (st.fatals.size() < kKeptFatals) st.fatals.push_back(message);
   lua_newtable(L);
   lua_pushstring(L, message.c_str());
   lua_setfield(L, -2, "aster_fatal");
+}
+
+State& stateOfThread(lua_State* L) { return **static_cast<State**>(lua_getextraspace(L)); }
+
+constexpr int kHookCount = 1000;  // instructions between two checks of Ctrl-C
+void stopHook(lua_State* L, lua_Debug*);
+
+// The stop goes up to the top level: the hook raises it again at the next
+// instruction of the running coroutine and of the main thread, whatever
+// pcall caught it on the way.
+void hurry(lua_State* L) {
+  State& st = stateOfThread(L);
+  lua_sethook(L, stopHook, LUA_MASKCOUNT, 1);
+  if (L != st.L) lua_sethook(st.L, stopHook, LUA_MASKCOUNT, 1);
+}
+
+// Pushes the error object of the pending stop (a Ctrl-C not yet seen becomes
+// one, with the study's line `level`).
+void pushStop(lua_State* L, int level) {
+  State& st = stateOfThread(L);
+  if (st.stop == State::Stop::None) {
+    st.stop = State::Stop::Interrupt;
+    st.stopMessage = "<F> <LUA> " + callSite(L, level) + ": interrupted (SIGINT)";
+  }
+  lua_newtable(L);
+  if (st.stop == State::Stop::Finish) {
+    lua_pushboolean(L, 1);
+    lua_setfield(L, -2, "aster_fin");
+  } else {
+    lua_pushstring(L, st.stopMessage.c_str());
+    lua_setfield(L, -2, "aster_fatal");
+    if (st.stop == State::Stop::Interrupt) {
+      lua_pushboolean(L, 1);
+      lua_setfield(L, -2, "aster_interrupted");
+    }
+  }
+  hurry(L);
+}
+
+bool stopPending(lua_State* L) { return stateOfThread(L).stop != State::Stop::None || interrupt::requested(); }
+
+// Every kHookCount instructions (every instruction once a stop is pending).
+// Cheap: a flag and a field read when nothing is pending.
+void stopHook(lua_State* L, lua_Debug*) {
+  if (!stopPending(L)) return;
+  pushStop(L, 0);
+  lua_error(L);
 }
 
 std::string fatalText(const std::string& command, const std::string& where, const std::string& what) {
@@ -273,6 +379,10 @@ std::string fatalText(const std::string& command, const std::string& where, cons
 // Returns the number of results, or -1 with an error object pushed.
 int commandImpl(lua_State* L, const CommandSpec& spec) {
   Session& session = *stateOf(L).session;
+  if (stateOf(L).stop != State::Stop::None) {  // FIN, os.exit or Ctrl-C seen: nothing more runs
+    pushStop(L, 1);
+    return -1;
+  }
   const std::string where = callSite(L);
   try {
     Keywords call;
@@ -305,7 +415,11 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
     session.command = spec.name;
     session.assignedName = assignedName(L, spec.name);
     session.produced.clear();
-    ConceptPtr result = (*op)(valid, session, reuse);
+    ConceptPtr result;
+    {
+      const interrupt::Watch safe(false);  // kernels stop at their own safe points
+      result = (*op)(valid, session, reuse);
+    }
     for (auto& [name, concept] : session.produced) {
       pushConcept(L, concept);
       lua_setglobal(L, name.c_str());
@@ -329,15 +443,15 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
   } catch (const ValidationError& e) {
     pushFatal(L, fatalText(spec.name, where, e.what()));
   } catch (const Interrupted& e) {
-    pushFatal(L, fatalText(spec.name, where, e.what()));
-    lua_pushboolean(L, 1);
-    lua_setfield(L, -2, "aster_interrupted");
+    State& st = stateOf(L);
+    st.stop = State::Stop::Interrupt;
+    st.stopMessage = fatalText(spec.name, where, e.what());
+    pushStop(L, 1);
   } catch (const Error& e) {
     pushFatal(L, fatalText(spec.name, where, e.what()));
   } catch (const StudyFinished&) {
-    lua_newtable(L);
-    lua_pushboolean(L, 1);
-    lua_setfield(L, -2, "aster_fin");
+    stateOf(L).stop = State::Stop::Finish;
+    pushStop(L, 1);
   } catch (const std::exception& e) {
     pushFatal(L, fatalText(spec.name, where, std::string("internal error: ") + e.what()));
   }
@@ -360,14 +474,20 @@ int callF(lua_State* L) {  // _F{...} as in code_aster: a factor keyword occurre
 int callCO(lua_State* L) {  // CO('name'): a concept a macro-command will create
   const char* name = luaL_checkstring(L, 1);
   void* mem = lua_newuserdatauv(L, sizeof(NewNameBox), 0);
-  new (mem) NewNameBox{name};
+  new (mem) NewNameBox{kLiveBox, name};
   luaL_setmetatable(L, kNewNameMeta);
   return 1;
 }
 
+// __gc: on anything but a live box of its kind (a second call, a call by hand
+// on another value) it does nothing.
 template <class Box>
 int collect(lua_State* L) {
-  static_cast<Box*>(lua_touserdata(L, 1))->~Box();
+  const char* meta = std::is_same_v<Box, ConceptBox> ? kConceptMeta : kNewNameMeta;
+  if (Box* box = liveBox<Box>(L, 1, meta)) {
+    box->~Box();
+    new (box) Box{};  // empty and dead: what reads it later finds no concept
+  }
   return 0;
 }
 
@@ -411,11 +531,23 @@ int methodImpl(lua_State* L, const std::string& method) {
     if (!m) throw Error("internal error: method " + method + " vanished");
     std::vector<Value> args;
     for (int i = 2; i <= lua_gettop(L); ++i) args.push_back(toValue(L, i));
-    Datum d = (*m)(*self->ptr, args, *stateOf(L).session);
+    Datum d;
+    {
+      const interrupt::Watch safe(false);
+      d = (*m)(*self->ptr, args, *stateOf(L).session);
+    }
     pushDatum(L, d);
     return 1;
+  } catch (const Interrupted& e) {
+    State& st = stateOf(L);
+    st.stop = State::Stop::Interrupt;
+    st.stopMessage = fatalText(self ? conceptLabel(L, *self->ptr) + ":" + method : method, where, e.what());
+    pushStop(L, 1);
   } catch (const std::exception& e) {
     pushFatal(L, fatalText(self ? conceptLabel(L, *self->ptr) + ":" + method : method, where, e.what()));
+  } catch (const StudyFinished&) {  // FIN in a Lua function the method evaluated
+    stateOf(L).stop = State::Stop::Finish;
+    pushStop(L, 1);
   }
   return -1;
 }
@@ -427,8 +559,18 @@ int callMethod(lua_State* L) {
   return n;
 }
 
+// A metamethod called by hand on something else than a live concept.
+int pushNotAConcept(lua_State* L, const char* metamethod) {
+  pushFatal(L, "<F> <LUA> " + callSite(L) + ": the concepts' " + metamethod + " was called on " +
+                   (lua_isuserdata(L, 1) && luaL_testudata(L, 1, kConceptMeta) ? std::string("a released concept")
+                                                                               : std::string("a ") + luaL_typename(L, 1)) +
+                   ", not on a concept");
+  return -1;
+}
+
 int conceptIndexImpl(lua_State* L) {
   ConceptBox* self = toConcept(L, 1);
+  if (!self) return pushNotAConcept(L, "__index");
   const char* key = lua_tostring(L, 2);
   if (!self->ptr->destroyedAt.empty()) {
     pushFatal(L, fatalText(self->ptr->name, callSite(L),
@@ -465,16 +607,23 @@ int conceptIndex(lua_State* L) {
 }
 
 int conceptCall(lua_State* L) {  // F(0.3, 0.7): functions are callable
-  const int n = methodImpl(L, "__call");
+  const int n = toConcept(L, 1) ? methodImpl(L, "__call") : pushNotAConcept(L, "__call");
   if (n < 0) return lua_error(L);
   return n;
 }
 
-int conceptToString(lua_State* L) {
+int conceptToStringImpl(lua_State* L) {
   ConceptBox* self = toConcept(L, 1);
+  if (!self) return pushNotAConcept(L, "__tostring");
   const std::string s = "<" + self->ptr->typeName() + " " + conceptLabel(L, *self->ptr) + ">";
   lua_pushstring(L, s.c_str());
   return 1;
+}
+
+int conceptToString(lua_State* L) {
+  const int n = conceptToStringImpl(L);
+  if (n < 0) return lua_error(L);
+  return n;
 }
 
 int conceptEq(lua_State* L) {
@@ -489,7 +638,7 @@ int undefinedGlobalImpl(lua_State* L) {
   const char* key = lua_tostring(L, 2);
   std::vector<std::string> names;
   lua_pushnil(L);
-  while (lua_next(L, 1)) {
+  while (lua_istable(L, 1) && lua_next(L, 1)) {  // (a table: the metamethod can be called by hand)
     if (lua_type(L, -2) == LUA_TSTRING) names.push_back(lua_tostring(L, -2));
     lua_pop(L, 1);
   }
@@ -516,16 +665,330 @@ std::string generatedName(const Concept& c) {
   return s.str();
 }
 
+// ---- The sandbox (docs/manual.md, "What a study may do") ----------------------
+
+namespace fs = std::filesystem;
+
+// Where a path leads: absolute, symbolic links resolved as far as it exists.
+fs::path resolved(const fs::path& p) {
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(p, ec);
+  if (ec) return p.lexically_normal();
+  const fs::path r = fs::weakly_canonical(absolute, ec);
+  return ec ? absolute.lexically_normal() : r;
+}
+
+// Files the study reads are its inputs: it may not write them later.
+void recordRead(lua_State* L, int arg) {
+  if (lua_type(L, arg) != LUA_TSTRING) return;
+  try {
+    const fs::path file = resolved(lua_tostring(L, arg));
+    std::error_code ec;
+    if (fs::exists(file, ec)) stateOf(L).readFiles.insert(file.string());
+  } catch (const std::exception&) {  // only a record: a path it cannot resolve fails to open anyway
+  }
+}
+
+// Why the study may not write `path` ("" when it may); `target` is then the
+// file, resolved. Below the output folder only (a relative path is taken
+// there), no hidden names, no links, no input.
+std::string writeRefusal(const State& st, const std::string& path, fs::path& target) {
+  if (path.empty()) return "an empty file name";
+  std::error_code ec;
+  const fs::path given = fs::absolute(st.session->outputDir / path, ec);
+  if (ec) return "the path cannot be resolved (" + ec.message() + ")";
+  const fs::path name = given.filename();
+  if (name.empty() || name == "." || name == "..") return "it names a folder, not a file";
+  target = resolved(given.parent_path()) / name;
+  const fs::path out = resolved(st.session->outputDir);
+  const fs::path below = target.lexically_relative(out);
+  if (below.empty() || *below.begin() == ".." || *below.begin() == ".")
+    return "a sandboxed study writes files only below its output folder " + out.string() +
+           " (a relative path is taken from there)";
+  for (const auto& part : below)
+    if (part.string()[0] == '.')
+      return "a sandboxed study writes no hidden file or folder (a name starting with '.': other programs read "
+             "such files as their settings)";
+  const auto status = fs::symlink_status(target, ec);
+  if (fs::is_symlink(status)) return target.string() + " is a symbolic link (a sandboxed study does not write through links)";
+  if (fs::is_regular_file(status) && fs::hard_link_count(target, ec) > 1)
+    return target.string() + " has other hard links (names that may lie outside the output folder)";
+  if (resolved(st.session->studyPath) == target) return target.string() + " is the study file itself";
+  for (const auto& [unit, file] : st.session->units)
+    if (resolved(file) == target)
+      return target.string() + " is bound to unit " + std::to_string(unit) + " (the commands read and write it)";
+  if (st.readFiles.count(target.string()) && !st.writtenFiles.count(target.string()))
+    return target.string() + " is an input of the study (it read the file)";
+  return "";
+}
+
+// Checks that argument `arg` names a file the study may write (create, replace,
+// delete), then replaces it by the resolved path, so that what is opened is what
+// was checked. Returns -1 with a <F> pushed when it may not.
+int sandboxWriteImpl(lua_State* L, const char* function, const char* verb, int arg) {
+  const std::string path = lua_tostring(L, arg);
+  try {
+    State& st = stateOf(L);
+    fs::path target;
+    const std::string why = writeRefusal(st, path, target);
+    if (why.empty()) {
+      st.session->outputFile("");  // the output folder exists from now on
+      st.writtenFiles.insert(target.string());
+      lua_pushstring(L, target.c_str());
+      lua_replace(L, arg);
+      return 0;
+    }
+    pushFatal(L, "<F> <LUA> " + callSite(L) + ": " + function + " cannot " + verb + " '" + path + "': " + why +
+                     " (aster-lite --unsafe-lua lifts the sandbox)");
+  } catch (const std::exception& e) {
+    pushFatal(L, "<F> <LUA> " + callSite(L) + ": " + function + " cannot " + verb + " '" + path + "': " + e.what());
+  }
+  return -1;
+}
+
+// Calls the library's own function (upvalue 1) with the arguments as they now are.
+int callOriginal(lua_State* L) {
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
+int sandboxedOpen(lua_State* L) {  // io.open(path [, mode])
+  luaL_checkstring(L, 1);
+  const char* mode = luaL_optstring(L, 2, "r");
+  if (std::strpbrk(mode, "wa+")) {
+    if (sandboxWriteImpl(L, "io.open", "write", 1) < 0) return lua_error(L);
+  } else {
+    recordRead(L, 1);
+  }
+  return callOriginal(L);
+}
+
+int sandboxedOutput(lua_State* L) {  // io.output([path | file]): a path is opened for writing
+  if (lua_type(L, 1) == LUA_TSTRING && sandboxWriteImpl(L, "io.output", "write", 1) < 0) return lua_error(L);
+  return callOriginal(L);
+}
+
+int sandboxedRead(lua_State* L) {  // io.input, io.lines: reading is free, recorded
+  recordRead(L, 1);
+  return callOriginal(L);
+}
+
+int sandboxedRemove(lua_State* L) {  // os.remove(path)
+  luaL_checkstring(L, 1);
+  if (sandboxWriteImpl(L, "os.remove", "delete", 1) < 0) return lua_error(L);
+  return callOriginal(L);
+}
+
+int sandboxedRename(lua_State* L) {  // os.rename(from, to)
+  luaL_checkstring(L, 1);
+  luaL_checkstring(L, 2);
+  if (sandboxWriteImpl(L, "os.rename", "move", 1) < 0 || sandboxWriteImpl(L, "os.rename", "replace", 2) < 0)
+    return lua_error(L);
+  return callOriginal(L);
+}
+
+int refusedImpl(lua_State* L, const char* what) {
+  pushFatal(L, "<F> <LUA> " + callSite(L) + ": " + what + " (aster-lite --unsafe-lua lifts the sandbox)");
+  return -1;
+}
+
+int sandboxedTmpname(lua_State* L) {
+  refusedImpl(L, "os.tmpname is not available to a sandboxed study: it creates a file outside the output folder");
+  return lua_error(L);
+}
+
+int sandboxedSetlocale(lua_State* L) {  // os.setlocale(): asking is free, changing is not
+  if (lua_isnoneornil(L, 1)) return callOriginal(L);
+  refusedImpl(L, "os.setlocale cannot change the locale of a sandboxed study: numbers would be printed and read "
+                 "with another decimal separator in the results");
+  return lua_error(L);
+}
+
+// os.exit([code]): ends the study as FIN does (plots drawn, checks counted, exit
+// status of the checks); a failure code (false, non-zero) ends it with exit status 2.
+void studyExitImpl(lua_State* L, const char* code) {
+  State& st = stateOf(L);
+  if (st.stop == State::Stop::None) {
+    if (!code) {
+      st.stop = State::Stop::Finish;
+    } else {
+      st.stop = State::Stop::Abort;
+      st.stopMessage = "<F> <LUA> " + callSite(L) + ": the study called os.exit(" + code + "): it ends as a failure";
+    }
+  }
+  pushStop(L, 1);
+}
+
+int studyExit(lua_State* L) {
+  const char* failure = nullptr;
+  if (lua_isboolean(L, 1)) {
+    if (!lua_toboolean(L, 1)) failure = "false";
+  } else if (luaL_optinteger(L, 1, 0) != 0) {
+    failure = lua_tostring(L, 1);
+  }
+  studyExitImpl(L, failure);
+  return lua_error(L);
+}
+
+// load, loadfile, dofile and require read text only: a binary chunk is
+// bytecode, which Lua does not check and which can corrupt the memory.
+constexpr int kPieceSlot = 5;  // load(reader): the reader's last piece, kept alive there
+
+const char* readPiece(lua_State* L, void*, size_t* size) {
+  luaL_checkstack(L, 2, "too many nested functions");
+  lua_pushvalue(L, 1);
+  lua_call(L, 0, 1);
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    *size = 0;
+    return nullptr;
+  }
+  if (!lua_isstring(L, -1)) luaL_error(L, "reader function must return a string");
+  lua_replace(L, kPieceSlot);
+  return lua_tolstring(L, kPieceSlot, size);
+}
+
+// The chunk loaded (with `env`, a stack index or 0, as its _ENV), or fail and the message.
+int loaded(lua_State* L, int status, int env) {
+  if (status != LUA_OK) {
+    luaL_pushfail(L);
+    lua_insert(L, -2);
+    return 2;
+  }
+  if (env != 0) {
+    lua_pushvalue(L, env);
+    if (!lua_setupvalue(L, -2, 1)) lua_pop(L, 1);
+  }
+  return 1;
+}
+
+int textLoad(lua_State* L) {  // load(chunk [, chunkname [, mode [, env]]]); mode is always 't'
+  const int env = lua_isnone(L, 4) ? 0 : 4;
+  if (lua_type(L, 1) == LUA_TSTRING) {
+    size_t size = 0;
+    const char* text = lua_tolstring(L, 1, &size);
+    const char* name = luaL_optstring(L, 2, text);
+    return loaded(L, luaL_loadbufferx(L, text, size, name, "t"), env);
+  }
+  luaL_checktype(L, 1, LUA_TFUNCTION);
+  const char* name = luaL_optstring(L, 2, "=(load)");
+  lua_settop(L, kPieceSlot);
+  return loaded(L, lua_load(L, readPiece, nullptr, name, "t"), env);
+}
+
+int textLoadfile(lua_State* L) {  // loadfile([file [, mode [, env]]])
+  const char* file = luaL_optstring(L, 1, nullptr);
+  const int env = lua_isnone(L, 3) ? 0 : 3;
+  recordRead(L, 1);
+  return loaded(L, luaL_loadfilex(L, file, "t"), env);
+}
+
+int textDofile(lua_State* L) {  // dofile([file])
+  const char* file = luaL_optstring(L, 1, nullptr);
+  lua_settop(L, 1);
+  recordRead(L, 1);
+  if (luaL_loadfilex(L, file, "t") != LUA_OK) return lua_error(L);
+  lua_call(L, 0, LUA_MULTRET);
+  return lua_gettop(L) - 1;
+}
+
+// package.searchers[2]: a module found on package.path, loaded as text.
+int textSearcher(lua_State* L) {
+  const char* name = luaL_checkstring(L, 1);
+  lua_getfield(L, lua_upvalueindex(1), "searchpath");
+  lua_pushvalue(L, 1);
+  lua_getfield(L, lua_upvalueindex(1), "path");
+  lua_call(L, 2, 2);
+  if (lua_isnil(L, -2)) return 1;  // the second result says where it looked
+  lua_pop(L, 1);
+  const char* file = lua_tostring(L, -1);
+  recordRead(L, lua_gettop(L));
+  if (luaL_loadfilex(L, file, "t") != LUA_OK)
+    return luaL_error(L, "error loading module '%s' from file '%s':\n\t%s", name, file, lua_tostring(L, -1));
+  lua_pushstring(L, file);
+  return 2;
+}
+
+// Replaces table[field] with f; with `keep`, f gets the original as upvalue 1.
+void replaceFunction(lua_State* L, const char* table, const char* field, lua_CFunction f, bool keep) {
+  lua_getglobal(L, table);
+  if (keep) {
+    lua_getfield(L, -1, field);
+    lua_pushcclosure(L, f, 1);
+  } else if (f) {
+    lua_pushcfunction(L, f);
+  } else {
+    lua_pushnil(L);
+  }
+  lua_setfield(L, -2, field);
+  lua_pop(L, 1);
+}
+
+void openLibraries(lua_State* L, bool unsafe) {
+  if (unsafe) {
+    luaL_openlibs(L);
+    return;
+  }
+  // Not the debug library: it reaches every upvalue and metatable.
+  static const luaL_Reg libraries[] = {
+      {LUA_GNAME, luaopen_base},       {LUA_LOADLIBNAME, luaopen_package}, {LUA_COLIBNAME, luaopen_coroutine},
+      {LUA_TABLIBNAME, luaopen_table}, {LUA_IOLIBNAME, luaopen_io},        {LUA_OSLIBNAME, luaopen_os},
+      {LUA_STRLIBNAME, luaopen_string}, {LUA_MATHLIBNAME, luaopen_math},  {LUA_UTF8LIBNAME, luaopen_utf8}};
+  for (const auto& library : libraries) {
+    luaL_requiref(L, library.name, library.func, 1);
+    lua_pop(L, 1);
+  }
+}
+
+// A study is data, not a program that may run other programs or change files
+// outside its output folder (--unsafe-lua restores plain Lua).
+void sandbox(lua_State* L) {
+  replaceFunction(L, LUA_GNAME, "load", textLoad, false);
+  replaceFunction(L, LUA_GNAME, "loadfile", textLoadfile, false);
+  replaceFunction(L, LUA_GNAME, "dofile", textDofile, false);
+  replaceFunction(L, LUA_STRLIBNAME, "dump", nullptr, false);
+  replaceFunction(L, LUA_OSLIBNAME, "execute", nullptr, false);
+  replaceFunction(L, LUA_IOLIBNAME, "popen", nullptr, false);
+  replaceFunction(L, LUA_LOADLIBNAME, "loadlib", nullptr, false);
+  replaceFunction(L, LUA_IOLIBNAME, "open", sandboxedOpen, true);
+  replaceFunction(L, LUA_IOLIBNAME, "output", sandboxedOutput, true);
+  replaceFunction(L, LUA_IOLIBNAME, "input", sandboxedRead, true);
+  replaceFunction(L, LUA_IOLIBNAME, "lines", sandboxedRead, true);
+  replaceFunction(L, LUA_OSLIBNAME, "remove", sandboxedRemove, true);
+  replaceFunction(L, LUA_OSLIBNAME, "rename", sandboxedRename, true);
+  replaceFunction(L, LUA_OSLIBNAME, "tmpname", sandboxedTmpname, false);
+  replaceFunction(L, LUA_OSLIBNAME, "setlocale", sandboxedSetlocale, true);
+  // require: package.preload, then Lua files as text; no C modules.
+  lua_getglobal(L, LUA_LOADLIBNAME);
+  lua_pushliteral(L, "");
+  lua_setfield(L, -2, "cpath");
+  lua_createtable(L, 2, 0);
+  lua_getfield(L, -2, "searchers");
+  lua_rawgeti(L, -1, 1);
+  lua_rawseti(L, -3, 1);
+  lua_pop(L, 1);
+  lua_pushvalue(L, -2);
+  lua_pushcclosure(L, textSearcher, 1);
+  lua_rawseti(L, -2, 2);
+  lua_setfield(L, -2, "searchers");
+  lua_pop(L, 1);
+}
+
 }  // namespace
 
 Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), session_(session) {
   lua_State* L = luaL_newstate();
   state_->L = L;
   state_->session = &session;
-  luaL_openlibs(L);
+  *static_cast<State**>(lua_getextraspace(L)) = state_.get();  // copied into every coroutine
+  openLibraries(L, session.unsafeLua);
   lua_pushlightuserdata(L, state_.get());
   lua_setfield(L, LUA_REGISTRYINDEX, kStateKey);
 
+  // getmetatable() gives a study a name, not the metamethods (which check what
+  // they are called on all the same).
   luaL_newmetatable(L, kConceptMeta);
   lua_pushcfunction(L, collect<ConceptBox>);
   lua_setfield(L, -2, "__gc");
@@ -537,10 +1000,14 @@ Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), 
   lua_setfield(L, -2, "__tostring");
   lua_pushcfunction(L, conceptEq);
   lua_setfield(L, -2, "__eq");
+  lua_pushliteral(L, "aster-lite concept");
+  lua_setfield(L, -2, "__metatable");
   lua_pop(L, 1);
   luaL_newmetatable(L, kNewNameMeta);
   lua_pushcfunction(L, collect<NewNameBox>);
   lua_setfield(L, -2, "__gc");
+  lua_pushliteral(L, "aster-lite CO name");
+  lua_setfield(L, -2, "__metatable");
   lua_pop(L, 1);
 
   for (const auto& [name, spec] : Catalogue::builtin().commands()) {
@@ -548,22 +1015,9 @@ Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), 
     lua_pushcclosure(L, callCommand, 1);
     lua_setglobal(L, name.c_str());
   }
-  if (!session.unsafeLua) {
-    // A study is data, not a program that may run other programs: no shell,
-    // no pipes, no binary chunks, no C modules (--unsafe-lua restores them).
-    const char* sandbox = R"(
-      os.execute, io.popen, package.loadlib = nil, nil, nil
-      package.cpath = ''
-      table.remove(package.searchers, 4); table.remove(package.searchers, 3)
-      local load_, loadfile_ = load, loadfile
-      load = function(chunk, name, mode, env) return load_(chunk, name, 't', env) end
-      loadfile = function(file, mode, env) return loadfile_(file, 't', env) end
-      dofile = function(file)
-        local f, err = loadfile_(file, 't'); if not f then error(err, 2) end; return f()
-      end
-    )";
-    if (luaL_dostring(L, sandbox) != LUA_OK) throw Error(std::string("Lua sandbox: ") + lua_tostring(L, -1));
-  }
+  if (!session.unsafeLua) sandbox(L);
+  // os.exit ends the study as FIN does: the plots are drawn, the checks counted.
+  replaceFunction(L, LUA_OSLIBNAME, "exit", studyExit, false);
   lua_pushcfunction(L, callF);
   lua_setglobal(L, "_F");
   lua_pushcfunction(L, callCO);
@@ -576,6 +1030,9 @@ Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), 
   lua_setmetatable(L, -2);
   lua_pop(L, 1);
 
+  // Ctrl-C, FIN and os.exit reach the study's Lua code through this hook.
+  lua_sethook(L, stopHook, LUA_MASKCOUNT, kHookCount);
+
   // Names come from the study's globals (MAIL = LIRE_MAILLAGE{...} is "MAIL").
   State* st = state_.get();
   session.nameOf = [st](const Concept& c) -> std::string {
@@ -586,7 +1043,7 @@ Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), 
     lua_pushnil(L);
     while (lua_next(L, -2)) {
       if (lua_type(L, -2) == LUA_TSTRING) {
-        if (auto* box = static_cast<ConceptBox*>(luaL_testudata(L, -1, kConceptMeta)))
+        if (auto* box = toConcept(L, -1))
           if (box->ptr.get() == &c) found = lua_tostring(L, -2);
       }
       lua_pop(L, 1);
@@ -594,9 +1051,34 @@ Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), 
     lua_pop(L, 1);
     return found.empty() ? generatedName(c) : found;
   };
+
+  // Ctrl-C while the study is stuck in one library call (no hook runs there):
+  // the watchdog thread ends the run in its place, then the process.
+  st->endFromWatchdog = [this, st] {
+    int nobody = 0;
+    if (!st->ending.compare_exchange_strong(nobody, 2)) return;  // the run is ending already
+    std::fflush(stdout);
+    std::fprintf(stderr,
+                 "<F> <LUA> interrupted (SIGINT): the study did not stop within %g s; it was inside one call "
+                 "to a Lua library function (a pattern search on a long string, a read from the terminal, a "
+                 "finalizer...)\n",
+                 interrupt::kWatchdogGrace);
+    std::fflush(stderr);
+    int status = kInterruptedStatus;
+    try {
+      status = finish(kInterruptedStatus);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "<F> <aster-lite> %s\n", e.what());
+    }
+    std::fflush(stdout);
+    std::fflush(stderr);
+    std::_Exit(status);
+  };
+  interrupt::setWatchdogHandler([](void* context) { static_cast<State*>(context)->endFromWatchdog(); }, st);
 }
 
 Interpreter::~Interpreter() {
+  interrupt::setWatchdogHandler(nullptr, nullptr);
   *state_->alive = false;
   session_.nameOf = [](const Concept& c) { return c.name.empty() ? c.typeName() : c.name; };
   lua_close(state_->L);
@@ -617,37 +1099,75 @@ int Interpreter::runFile(const std::string& path) {
 // end with its last command.
 int Interpreter::runString(const std::string& code, const std::string& chunkName) {
   lua_State* L = state_->L;
-  auto& lines = state_->sources[chunkName];
+  State& st = *state_;
+  auto& lines = st.sources[chunkName];
   lines.clear();  // a chunk run again under the same name is read afresh
   std::istringstream text(code);
   for (std::string line; std::getline(text, line);) lines.push_back(line);
-  int status = luaL_loadbuffer(L, code.data(), code.size(), chunkName.c_str());
-  if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
-  if (status == LUA_OK) return finish(0);
-
-  std::string message;
-  bool finished = false, interrupted = false;
-  if (lua_istable(L, -1)) {
-    lua_getfield(L, -1, "aster_fin");
-    finished = lua_toboolean(L, -1);
-    lua_pop(L, 1);
-    lua_getfield(L, -1, "aster_interrupted");
-    interrupted = lua_toboolean(L, -1);
-    lua_pop(L, 1);
-    lua_getfield(L, -1, "aster_fatal");
-    if (lua_isstring(L, -1)) message = lua_tostring(L, -1);
-    lua_pop(L, 1);
-  } else if (lua_isstring(L, -1)) {
-    message = std::string("<F> <LUA> ") + lua_tostring(L, -1);
-  } else {
-    message = "<F> <LUA> a Lua error without a message";
+  st.fatals.clear();
+  st.fatalCount = 0;
+  st.stop = State::Stop::None;
+  st.stopMessage.clear();
+  st.ending = 0;
+  lua_sethook(L, stopHook, LUA_MASKCOUNT, kHookCount);
+  int status;
+  {
+    const interrupt::Watch watched(true);
+    // A sandboxed study is text: bytecode is not checked by Lua.
+    status = luaL_loadbufferx(L, code.data(), code.size(), chunkName.c_str(), session_.unsafeLua ? nullptr : "t");
+    if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
   }
-  lua_pop(L, 1);
-  if (finished) return finish(0);
+  // The watchdog may have taken over while the study was stuck after Ctrl-C: it
+  // ends the run and the process, this thread waits for that.
+  int nobody = 0;
+  if (!st.ending.compare_exchange_strong(nobody, 1))
+    for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+
+  std::string message;  // the error that ended the study, if any
+  bool finished = false;
+  if (status != LUA_OK) {
+    if (lua_istable(L, -1)) {
+      lua_getfield(L, -1, "aster_fin");
+      finished = lua_toboolean(L, -1);
+      lua_pop(L, 1);
+      lua_getfield(L, -1, "aster_fatal");
+      if (lua_isstring(L, -1)) message = lua_tostring(L, -1);
+      lua_pop(L, 1);
+    } else if (lua_isstring(L, -1)) {
+      message = std::string("<F> <LUA> ") + lua_tostring(L, -1);
+    } else {
+      message = "<F> <LUA> a Lua error without a message";
+    }
+    lua_pop(L, 1);
+  }
+  // A stop the study could not catch decides, whatever error reached the top.
+  if (st.stop == State::Stop::Interrupt || st.stop == State::Stop::Abort) {
+    message = st.stopMessage;
+    finished = false;
+  } else if (st.stop == State::Stop::Finish) {
+    message.clear();
+    finished = true;
+  }
+  if (finished || status == LUA_OK) message.clear();
+  // The <F> the study caught (pcall, coroutine.resume) are fatal all the same.
+  std::vector<std::string> caught;
+  for (const auto& f : st.fatals)
+    if (f != message) caught.push_back(f);
+  std::size_t notKept = st.fatalCount - st.fatals.size();
+  if (!message.empty() && caught.size() == st.fatals.size() && notKept > 0) --notKept;  // the one at the top
+  const std::size_t caughtCount = caught.size() + notKept;
   std::fflush(stdout);
-  std::fprintf(stderr, "%s\n", message.c_str());
+  for (const auto& f : caught) std::fprintf(stderr, "%s\n", f.c_str());
+  if (caughtCount > 0)
+    std::fprintf(stderr,
+                 "<F> <LUA> the study went on after %zu fatal error%s (caught with pcall or in a coroutine%s): a "
+                 "fatal error ends the run with exit status 2\n",
+                 caughtCount, caughtCount == 1 ? "" : "s",
+                 caughtCount > caught.size() ? "; the first ones are shown" : "");
+  if (!message.empty()) std::fprintf(stderr, "%s\n", message.c_str());
   std::fflush(stderr);
-  return finish(interrupted ? kInterruptedStatus : 2);
+  if (st.stop == State::Stop::Interrupt) return finish(kInterruptedStatus);
+  return finish(!message.empty() || caughtCount > 0 ? 2 : 0);
 }
 
 int Interpreter::finish(int status) {

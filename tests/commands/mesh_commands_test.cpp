@@ -45,10 +45,11 @@ class MeshCommands : public testing::Test {
 
   // Runs `code` as <dir>/etude.lua, unit 20 bound to ssnp150b.mail, with a
   // helper show(key, value) printing "@key=value" (lists joined by spaces).
-  StudyRun run(const std::string& code) {
+  StudyRun run(const std::string& code, bool unsafeLua = false) {
     Session session;
     session.studyPath = dir_ / "etude.lua";
     session.outputDir = dir_ / "etude";
+    session.unsafeLua = unsafeLua;
     Interpreter interpreter(session);
     const std::string prelude =
         "local function show(k, v) if type(v) == 'table' then v = table.concat(v, ' ') end "
@@ -108,7 +109,7 @@ show('surface', #MAIL:getCells('SURFACE'))
 show('bas', #MAIL:getCells('BAS'))
 show('basNodes', #MAIL:getNodes('BAS'))
 show('maitre', #MAIL:getCells('MAITRE'))
-)");
+)", true);  // a .geo script: --unsafe-lua
   EXPECT_STUDY_OK(r);
   EXPECT_EQ(r.shown["nodes"], "836");
   EXPECT_EQ(r.shown["cells"], "321");

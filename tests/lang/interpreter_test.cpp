@@ -1,10 +1,15 @@
 // The Lua layer: commands as globals, file:line in messages, FIN, plain Lua.
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "core/interrupt.hpp"
 #include "lang/interpreter.hpp"
 
 using namespace aster::lang;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -13,14 +18,20 @@ struct StudyRun {
   std::string out, err;
 };
 
-StudyRun run(const std::string& code) {
+struct Where {
+  fs::path study = "etude.lua", output = "etude";
+  bool unsafeLua = false;
+};
+
+StudyRun run(const std::string& code, const Where& where = {}) {
   Session session;
-  session.studyPath = "etude.lua";
-  session.outputDir = "etude";
+  session.studyPath = where.study;
+  session.outputDir = where.output;
+  session.unsafeLua = where.unsafeLua;
   Interpreter interpreter(session);
   testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
-  const int status = interpreter.runString(code, "@etude.lua");
+  const int status = interpreter.runString(code, "@" + where.study.filename().string());
   StudyRun r{status, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
   return r;
 }
@@ -60,7 +71,7 @@ TEST(Interpreter, FactorKeywordGivenAsTableListOrUnderscoreF) {
 TEST(Interpreter, UnknownCommandSuggestsTheClosest) {
   const StudyRun r = run("DEBUT{}\nDEBU{}\n");
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "<F> <LUA> etude.lua:2: 'DEBU' is not defined; did you mean DEBUT or debug?\n");
+  EXPECT_EQ(r.err, "<F> <LUA> etude.lua:2: 'DEBU' is not defined; did you mean DEBUT?\n");
 }
 
 TEST(Interpreter, CallWithoutATable) {
@@ -125,9 +136,13 @@ TEST(Interpreter, DetruireUnbindsTheConceptAndRefusesItsUse) {
 
 TEST(Interpreter, StudiesRunSandboxed) {
   StudyRun r = run("assert(os.execute == nil and io.popen == nil and package.loadlib == nil)\n"
-                   "local f, err = load(string.dump(function() return 1 end))\n"
-                   "assert(f == nil and err:find('binary'))\n"
-                   "assert(load('return 2')() == 2)\n");
+                   "assert(rawget(_G, 'debug') == nil and package.loaded.debug == nil and string.dump == nil)\n"
+                   "assert(not pcall(require, 'debug'))\n"
+                   "assert(load('return 2')() == 2)\n"
+                   "assert(load('return x', 'chunk', 't', {x = 3})() == 3)\n"
+                   "local pieces = {'return ', '4', '0 + 2'}\n"
+                   "assert(load(function() return table.remove(pieces, 1) end)() == 42)\n"
+                   "assert(getmetatable(_F) == nil)\n");
   EXPECT_EQ(r.status, 0) << r.err;
   r = run("os.execute('true')\n");
   EXPECT_EQ(r.status, 2);
@@ -144,4 +159,238 @@ TEST(Interpreter, CtrlCStopsBeforeTheNextCommand) {
   EXPECT_EQ(r.status, 130);
   EXPECT_EQ(r.out, "before\n");
   EXPECT_NE(r.err.find("<F> <DEBUT> etude.lua:2: interrupted (SIGINT) before DEBUT"), std::string::npos) << r.err;
+}
+
+namespace {
+
+// A scratch folder per test.
+class Sandbox : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("aster_interpreter_" + std::to_string(::getpid()) + "_" +
+            testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+  Where at(bool unsafeLua = false) const { return {dir_ / "etude.lua", dir_ / "etude", unsafeLua}; }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+}  // namespace
+
+// Bytecode is not checked by Lua (crafted bytecode corrupts the memory): a
+// sandboxed study loads text only, whatever the path.
+TEST_F(Sandbox, NoBytecodeByAnyPath) {
+  // The bytecode, made with --unsafe-lua (plain Lua): f.luac, and mod.lua for require.
+  StudyRun r = run("local code = string.dump(function() return 'ran bytecode' end)\n"
+                   "for _, name in ipairs({" + quoted(path("f.luac")) + ", " + quoted(path("mod.lua")) + "}) do\n"
+                   "  local f = assert(io.open(name, 'wb')); f:write(code); f:close()\n"
+                   "end\n"
+                   "assert(load(code)() == 'ran bytecode')\n",
+                   at(true));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string refused = "attempt to load a binary chunk (mode is 't')";
+  r = run("local f = assert(io.open(" + quoted(path("f.luac")) + ", 'rb')); local code = f:read('a'); f:close()\n"
+          "local function refused(fn, err) assert(fn == nil and err:find([[" + refused + "]], 1, true), err) end\n"
+          "refused(load(code))\n"
+          "refused(load(code, 'x', 'b'))\n"
+          "local once = code\n"
+          "refused(load(function() local piece = once; once = nil; return piece end))\n"
+          "refused(loadfile(" + quoted(path("f.luac")) + "))\n"
+          "refused(loadfile(" + quoted(path("f.luac")) + ", 'b'))\n"
+          "local ok, err = pcall(dofile, " + quoted(path("f.luac")) + ")\n"
+          "assert(not ok and err:find([[" + refused + "]], 1, true), err)\n"
+          "package.path = " + quoted(path("?.lua")) + "\n"
+          "ok, err = pcall(require, 'mod')\n"
+          "assert(not ok and err:find([[" + refused + "]], 1, true), err)\n"
+          "print('all refused')\n",
+          at());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "all refused\n");
+  // Nor is the study itself bytecode.
+  std::ifstream in(path("f.luac"), std::ios::binary);
+  const std::string bytecode((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  {
+    Session session;
+    session.studyPath = path("etude.lua");
+    session.outputDir = path("etude");
+    Interpreter interpreter(session);
+    testing::internal::CaptureStdout();
+    testing::internal::CaptureStderr();
+    const int status = interpreter.runString(bytecode, "@etude.lua");
+    const std::string out = testing::internal::GetCapturedStdout(), err = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(status, 2);
+    EXPECT_EQ(out, "");
+    EXPECT_NE(err.find("<F> <LUA> " + refused), std::string::npos) << err;
+  }
+}
+
+TEST_F(Sandbox, RequireLoadsTextModules) {
+  std::ofstream(path("helper.lua")) << "return {twice = function(x) return 2 * x end}\n";
+  const StudyRun r = run("package.path = " + quoted(path("?.lua")) + "\n"
+                         "print(require('helper').twice(21))\n"
+                         "assert(not pcall(require, 'absent_module'))\n"
+                         "assert(package.cpath == '' and #package.searchers == 2)\n",
+                         at());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "42\n");
+}
+
+// Writing: below the output folder only, where a relative path is taken.
+TEST_F(Sandbox, StudiesWriteBelowTheirOutputFolderOnly) {
+  fs::create_directories(dir_ / "etude" / "sub");
+  fs::create_symlink(dir_, dir_ / "etude" / "escape");
+  fs::create_symlink(dir_ / "absent", dir_ / "etude" / "dangling");
+  std::ofstream(path("outside.txt")) << "keep me\n";
+  const std::string fatal = "<F> <LUA> etude.lua:";
+  StudyRun r = run("local f = assert(io.open('table.csv', 'w')); f:write('1,2\\n'); f:close()\n"
+                   "f = assert(io.open('sub/more.csv', 'a')); f:close()\n"
+                   "assert(os.rename('sub/more.csv', 'renamed.csv'))\n"
+                   "assert(os.remove('renamed.csv'))\n"
+                   "io.output('log.txt'); io.write('logged\\n'); io.close(); io.output(io.stdout)\n"
+                   "assert(io.open(" + quoted(path("etude/table.csv")) + "):read('a') == '1,2\\n')\n"
+                   "f = assert(io.open(" + quoted(path("etude/table.csv")) + ", 'a')); f:close()\n"
+                   "print(io.open(" + quoted(path("outside.txt")) + "):read('l'))\n",
+                   at());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "keep me\n");
+  EXPECT_TRUE(fs::exists(dir_ / "etude" / "table.csv"));
+  EXPECT_TRUE(fs::exists(dir_ / "etude" / "log.txt"));
+  EXPECT_FALSE(fs::exists(dir_ / "etude" / "renamed.csv"));
+
+  struct Refused {
+    std::string code, message;
+  };
+  const std::string out = fs::weakly_canonical(dir_ / "etude").string();
+  const std::string outside = "a sandboxed study writes files only below its output folder " + out +
+                              " (a relative path is taken from there) (aster-lite --unsafe-lua lifts the sandbox)";
+  for (const Refused& c : std::vector<Refused>{
+           {"io.open('../outside.txt', 'w')", "io.open cannot write '../outside.txt': " + outside},
+           {"io.open(" + quoted(path("outside.txt")) + ", 'r+')",
+            "io.open cannot write '" + path("outside.txt") + "': " + outside},
+           {"io.open('sub/../../outside.txt', 'a')", "io.open cannot write 'sub/../../outside.txt': " + outside},
+           {"io.open('escape/outside.txt', 'w')", "io.open cannot write 'escape/outside.txt': " + outside},
+           {"io.open('dangling', 'w')", "io.open cannot write 'dangling': " + out +
+                                            "/dangling is a symbolic link (a sandboxed study does not write through links)"},
+           {"io.open('.bashrc', 'w')", "io.open cannot write '.bashrc': a sandboxed study writes no hidden file"},
+           {"io.open('.config/x', 'w')", "io.open cannot write '.config/x': a sandboxed study writes no hidden file"},
+           {"io.open('sub', 'w')", ""},  // a folder: io.open itself fails, no <F>
+           {"io.output('../outside.txt')", "io.output cannot write '../outside.txt': " + outside},
+           {"os.remove(" + quoted(path("outside.txt")) + ")",
+            "os.remove cannot delete '" + path("outside.txt") + "': " + outside},
+           {"os.rename('table.csv', '../outside.txt')", "os.rename cannot replace '../outside.txt': " + outside},
+           {"os.rename('../outside.txt', 'mine.txt')", "os.rename cannot move '../outside.txt': " + outside},
+           {"os.tmpname()", "os.tmpname is not available to a sandboxed study"},
+           {"os.setlocale('fr_FR.UTF-8')", "os.setlocale cannot change the locale of a sandboxed study"},
+       }) {
+    r = run(c.code + "\n", at());
+    if (c.message.empty()) {
+      EXPECT_EQ(r.status, 0) << c.code << "\n" << r.err;
+      continue;
+    }
+    EXPECT_EQ(r.status, 2) << c.code;
+    EXPECT_EQ(r.err.rfind(fatal + "1: " + c.message, 0), 0u) << c.code << "\n" << r.err;
+  }
+  std::ifstream in(path("outside.txt"));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "keep me");
+  EXPECT_EQ(run("print(os.setlocale())\n", at()).out, "C\n");
+}
+
+// With the output folder where the inputs are, the inputs are not writable.
+TEST_F(Sandbox, StudiesNeverReplaceTheirInputs) {
+  std::ofstream(path("etude.lua")) << "-- the study\n";
+  std::ofstream(path("mesh.mail")) << "COOR_2D\n";
+  std::ofstream(path("data.txt")) << "1 2 3\n";
+  Where here{dir_ / "etude.lua", dir_, false};
+  StudyRun r = run("io.open('etude.lua', 'w')\n", here);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("io.open cannot write 'etude.lua': " + fs::weakly_canonical(dir_ / "etude.lua").string() +
+                       " is the study file itself"),
+            std::string::npos)
+      << r.err;
+  r = run("DEFI_FICHIER{ACTION='ASSOCIER', UNITE=20, FICHIER='mesh.mail'}\nos.remove('mesh.mail')\n", here);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("is bound to unit 20"), std::string::npos) << r.err;
+  r = run("for l in io.lines(" + quoted(path("data.txt")) + ") do end\nio.open('data.txt', 'w')\n", here);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("is an input of the study (it read the file)"), std::string::npos) << r.err;
+  // What the study wrote itself it may read back and write again.
+  r = run("io.open('mine.txt', 'w'):close()\nio.open(" + quoted(path("mine.txt")) + "):close()\n"
+          "io.open('mine.txt', 'w'):close()\n",
+          here);
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::ifstream in(path("etude.lua"));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "-- the study");
+}
+
+TEST(Interpreter, GetmetatableGivesNamesOnly) {
+  const StudyRun r = run("F = FORMULE{VALE = 'X', NOM_PARA = 'X'}\n"
+                         "print(getmetatable(F), getmetatable(CO('A')))\n"
+                         "assert(not pcall(setmetatable, F, {}))\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "aster-lite concept\taster-lite CO name\n");
+}
+
+// A <F> is fatal even when the study catches it; FIN and os.exit cannot be caught.
+TEST(Interpreter, FatalErrorsStayFatal) {
+  StudyRun r = run("local ok, err = pcall(DEBUT, {PAR_LOT = 'PEUT-ETRE'})\nprint(ok, err.aster_fatal ~= nil)\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "false\ttrue\n");
+  EXPECT_EQ(r.err,
+            "<F> <DEBUT> etude.lua:1: keyword PAR_LOT = 'PEUT-ETRE' is not allowed; allowed values: 'OUI', 'NON'\n"
+            "<F> <LUA> the study went on after 1 fatal error (caught with pcall or in a coroutine): a fatal error "
+            "ends the run with exit status 2\n");
+  // Caught, then raised again by the study: printed once.
+  r = run("local ok, err = pcall(DEBUT, {PAR_LOT = 'PEUT-ETRE'})\nerror(err)\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err,
+            "<F> <DEBUT> etude.lua:1: keyword PAR_LOT = 'PEUT-ETRE' is not allowed; allowed values: 'OUI', 'NON'\n");
+  // In a coroutine.
+  r = run("local co = coroutine.create(function() DEBUT{LANG = 'DE'} end)\nprint(coroutine.resume(co) == false)\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "true\n");
+  EXPECT_EQ(r.err.rfind("<F> <DEBUT> etude.lua:1:", 0), 0u) << r.err;
+  // A plain Lua error caught by pcall is the study's business.
+  EXPECT_EQ(run("assert(not pcall(error, 'mine'))\n").status, 0);
+  // Nothing runs after FIN or os.exit(), caught or not; os.exit(failure) is a fatal error.
+  r = run("pcall(FIN)\nprint('after FIN')\n");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out, "");
+  r = run("local co = coroutine.wrap(function() pcall(os.exit, true) end)\npcall(co)\nprint('after exit')\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  r = run("pcall(os.exit, false)\nprint('after exit')\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "<F> <LUA> etude.lua:1: the study called os.exit(false): it ends as a failure\n");
+}
+
+// Ctrl-C reaches Lua code within a thousand instructions, and pcall does not stop it.
+TEST(Interpreter, CtrlCStopsLuaCode) {
+  for (const char* code : {
+           "while true do end\n",
+           "while true do pcall(function() while true do end end) end\n",
+           "while true do pcall(error, 'x') end\n",
+           "while true do xpcall(function() while true do end end, function(m) return m end) end\n",
+           "coroutine.wrap(function() while true do end end)()\n",
+           "while true do coroutine.resume(coroutine.create(function() while true do end end)) end\n",
+           "F = FORMULE{VALE = function(x) while true do end end, NOM_PARA = 'X'}\nF(1.0)\n",
+       }) {
+    aster::interrupt::request();
+    const StudyRun r = run(code);
+    aster::interrupt::clear();
+    EXPECT_EQ(r.status, kInterruptedStatus) << code << r.err;
+    EXPECT_NE(r.err.find("interrupted (SIGINT)"), std::string::npos) << code << r.err;
+  }
 }

@@ -49,7 +49,7 @@ void expectOnLine(const Mesh& m, const std::string& g, int axis, double value) {
 
 TEST(Gmsh, Ssnp150GeoForSeveralN) {
   for (int n : {1, 2, 16}) {
-    const Mesh m = readGmshMesh(kDir + "ssnp150.geo", {{{"N", double(n)}}});
+    const Mesh m = readGmshMesh(kDir + "ssnp150.geo", {{{"N", double(n)}}, true});
     EXPECT_EQ(m.countCells(CellType::QUAD8), n * n) << n;
     EXPECT_EQ(m.countCells(CellType::SEG3), 4 * n + 1) << n;
     EXPECT_EQ(m.cellCount(), n * n + 4 * n + 1);
@@ -111,7 +111,7 @@ TEST(Gmsh, RefiningSsnp150bFourTimesGivesTheGmshN16Mesh) {
       EXPECT_GE(m.node(k)[d], -1e-12);
       EXPECT_LE(m.node(k)[d], 1 + 1e-12);
     }
-  const Mesh g = readGmshMesh(kDir + "ssnp150.geo", {{{"N", 16}}});
+  const Mesh g = readGmshMesh(kDir + "ssnp150.geo", {{{"N", 16}}, true});
   EXPECT_EQ(nodePoints(m), nodePoints(g));
   for (const char* grp : {"SURFACE", "BAS", "HAUT", "GAUCHE", "DROITE", "MAITRE"})
     EXPECT_EQ(centroids(m, m.cellGroup(grp)), centroids(g, g.cellGroup(grp))) << grp;

@@ -1,5 +1,6 @@
--- expect-exit: 0
--- expect-output: SOLVEUR NPREC: every check passed
+-- expect-exit: 2
+-- expect-output: SOLVEUR NPREC: every check passed.*<F> <LUA> the study went on after 4 fatal errors \(caught with pcall
+-- The <F> the study catches with pcall still end the run with exit status 2.
 -- SOLVEUR/NPREC and STOP_SINGULIER are honoured by every METHODE. The unit square
 -- (one QUAD4), PETIT, D_PLAN, nearly incompressible (E = 1000, NU = 0.4999): DX = 0
 -- on GAUCHE, DY = 0 at P1, a traction p = 1 on DROITE. Its stiffness loses about

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -278,8 +279,23 @@ Mesh readCurrentModel(const std::string& path) {
 
 }  // namespace
 
+std::string gmshScriptRisk(const std::string& path) {
+  if (hasExtension(path, ".geo")) return "a gmsh script (.geo), whose commands gmsh runs (SystemCall included)";
+  if (!hasExtension(path, ".msh"))
+    return "not a .msh file (gmsh chooses by the extension how to open a file: a .geo is a script, a .py or .exe "
+           "a program; a mesh file handed to it must end in .msh)";
+  std::error_code ec;
+  if (std::filesystem::exists(path + ".opt", ec))
+    return "next to an option file, " + path + ".opt, which gmsh would run as a script";
+  return "";
+}
+
 Mesh readGmshMesh(const std::string& path, const GmshReadOptions& options) {
   if (!std::ifstream(path)) throw Error("cannot open the gmsh file '" + path + "'");
+  if (!options.scripts) {
+    const std::string risk = gmshScriptRisk(path);
+    if (!risk.empty()) throw Error(path + " is " + risk + ": it is not opened with gmsh");
+  }
   const bool script = hasExtension(path, ".geo");
   if (!script) checkMshFile(path);
   // gmsh's own message is kept; for a mesh file, say what aster-lite expected.

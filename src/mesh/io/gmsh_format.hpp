@@ -33,11 +33,21 @@ inline constexpr const char* kGmshUngroupedName = "aster-lite:ungrouped";
 struct GmshReadOptions {
   // ONELAB numbers set before the file is opened (e.g. {"N", 4} for ssnp150.geo).
   std::vector<std::pair<std::string, double>> numbers;
+  // gmsh runs the commands of the scripts it opens, SystemCall included: only
+  // with `scripts` is it handed a file gmshScriptRisk warns about.
+  bool scripts = false;
 };
+
+// Why gmsh would run commands when it opens `path`, "" when it would only read
+// a mesh: a .geo script; a file not ending in .msh (gmsh chooses by extension
+// how to open a file, and makes a .py or .exe the program of a solver); a
+// "<path>.opt" beside it, which gmsh merges as a script.
+std::string gmshScriptRisk(const std::string& path);
 
 // Kept: every cell of dimension >= 1, cells of dimension 0 only when they are in
 // a physical group (gmsh puts one on every geometric point), nodes used by a kept cell.
-// A file not ending in .geo is a mesh file: checkMshFile (msh_check.hpp) first
+// Without options.scripts, a file gmshScriptRisk warns about is refused. A file
+// not ending in .geo is a mesh file: checkMshFile (msh_check.hpp) first
 // reports a malformed file with its line and what was expected; a failure of gmsh
 // itself then gives "<path>: gmsh error: <gmsh's message> (expected a gmsh .msh
 // file, version 2.2 or 4.1)".
