@@ -55,6 +55,7 @@ ConceptPtr defiFichier(const Keywords& k, Session& session, ConceptPtr) {
   }
   const int unit = static_cast<int>(k.integer("UNITE"));
   session.units[unit] = session.studyRelative(k.text("FICHIER", "fort." + std::to_string(unit)));
+  session.unitsBoundByStudy.insert(unit);
   if (k.text("ACCES", "NEW") == "OLD")  // declared for reading: never written over
     session.files.addInput(session.units[unit], "bound for reading by DEFI_FICHIER at " + session.where);
   return nullptr;

@@ -206,9 +206,7 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
     }
     const auto path = bound != session.units.end() ? bound->second
                                                    : session.outputFile("fort." + std::to_string(unit));
-    if (const std::string how = session.inputOf(path); !how.empty())
-      throw Error("UNITE=" + std::to_string(unit) + " is bound to " + path.string() + ", an input of the study (" +
-                  how + "): aster-lite never writes over a file the study read; bind another file to the unit");
+    session.checkUnitWritable(unit, path);
     // A file written for the first time in this run starts afresh, later writes add to it.
     appendAtomically(path, out.str(), session.files.written(path), &session.files);
     if (unit == 8 && bound == session.units.end()) {
@@ -223,9 +221,7 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   std::filesystem::path image = bound != session.units.end()
                                     ? bound->second
                                     : session.outputFile("fonction_" + std::to_string(plots) + ext);
-  if (const std::string how = session.inputOf(image); !how.empty())
-    throw Error("UNITE=" + std::to_string(unit) + " is bound to " + image.string() + ", an input of the study (" +
-                how + "): aster-lite never writes over a file the study read; bind another file to the unit");
+  session.checkUnitWritable(unit, image);
   if (session.files.written(image))  // a second plot to one unit gets a file of its own
     image = session.files.fresh(image.parent_path(), image.stem().string(), image.extension().string());
   session.files.addWritten(image);

@@ -407,10 +407,8 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
   const std::string stem = fs::path(path).replace_extension("").filename().string();
   const std::string pathExt = path.extension().string();
   std::string note;
+  if (bound != session.units.end()) session.checkUnitWritable(unit, path);
   if (const std::string how = session.inputOf(path); !how.empty()) {
-    if (bound != session.units.end())
-      throw Error(unitText + " is bound to " + path.string() + ", an input of the study (" + how +
-                  "): aster-lite never writes over a file the study read; bind another file to the unit");
     note = path.filename().string() + " is an input of the study, never written over";
     for (int n = 2; !session.inputOf(path).empty(); ++n) path = folder / (stem + "-" + std::to_string(n) + pathExt);
   }

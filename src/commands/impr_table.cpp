@@ -37,9 +37,7 @@ ConceptPtr imprTable(const Keywords& k, Session& session, ConceptPtr) {
   bool keep;
   if (bound != session.units.end()) {
     path = bound->second;
-    if (const std::string how = session.inputOf(path); !how.empty())
-      throw Error("UNITE=" + std::to_string(unit) + " is bound to " + path.string() + ", an input of the study (" +
-                  how + "): aster-lite never writes over a file the study read; bind another file to the unit");
+    session.checkUnitWritable(unit, path);
     keep = true;
   } else {
     // A second IMPR_TABLE of the run to the same file follows the first.

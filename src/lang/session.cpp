@@ -49,6 +49,24 @@ std::string Session::inputOf(const std::filesystem::path& file) {
   return files.inputOf(file);
 }
 
+void Session::checkUnitWritable(int unit, const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const std::string unitText = "UNITE=" + std::to_string(unit);
+  if (const std::string how = inputOf(path); !how.empty())
+    throw Error(unitText + " is bound to " + path.string() + ", an input of the study (" + how +
+                "): aster-lite never writes over a file the study read; bind another file to the unit");
+  if (unsafeLua || !unitsBoundByStudy.count(unit)) return;
+  std::error_code ec;
+  const fs::path file = fs::weakly_canonical(fs::absolute(path), ec);
+  const fs::path folder = fs::weakly_canonical(fs::absolute(outputDir), ec);
+  const auto rel = file.lexically_relative(folder);
+  if (ec || rel.empty() || *rel.begin() == "..")
+    throw Error(unitText + " is bound by DEFI_FICHIER to " + path.string() +
+                ", outside the output folder " + outputDir.string() +
+                ": a study writes only below its output folder (bind the unit with -u on the command line, "
+                "or run with --unsafe-lua if you trust the study)");
+}
+
 void Session::recordCheck(const std::string& block, bool ok) {
   (ok ? checksOk : checksNook) += 1;
   // Checks are always shown, even with --quiet: they are the study's verdict.

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,8 @@ struct Session {
   std::filesystem::path studyPath;  // as given on the command line
   std::filesystem::path outputDir;  // results, tables, plots
   std::map<int, std::filesystem::path> units;  // DEFI_FICHIER and -u N=path
+  // The units the study itself bound (DEFI_FICHIER), not the command line (-u).
+  std::set<int> unitsBoundByStudy;
 
   // --unsafe-lua: keep os.execute, io.popen, binary chunks and C modules.
   bool unsafeLua = false;
@@ -43,6 +46,10 @@ struct Session {
   void writeFile(const std::filesystem::path& target, const std::function<void(const std::filesystem::path&)>& write);
   // How `file` was read when it is an input of the study (the study file included), else "".
   std::string inputOf(const std::filesystem::path& file);
+  // Throws unless a command may write `path`, the file bound to `unit`: never an
+  // input of the study; in the sandbox, a file the study bound (DEFI_FICHIER)
+  // only below the output folder (-u on the command line is the user's choice).
+  void checkUnitWritable(int unit, const std::filesystem::path& path);
 
   // TEST_RESU and friends: counts, and the lines of <output-dir>/<study>.resu.
   int checksOk = 0;
