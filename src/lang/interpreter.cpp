@@ -108,7 +108,11 @@ Value toValue(lua_State* L, int idx) {
     case LUA_TNUMBER:
       if (lua_isinteger(L, idx)) return Value::ofInteger(lua_tointeger(L, idx));
       return Value::ofReal(lua_tonumber(L, idx));
-    case LUA_TSTRING: return Value::ofText(lua_tostring(L, idx));
+    case LUA_TSTRING: {  // whole, NUL bytes included: the validator refuses those by keyword name
+      std::size_t size = 0;
+      const char* text = lua_tolstring(L, idx, &size);
+      return Value::ofText(std::string(text, size));
+    }
     case LUA_TBOOLEAN: return Value::other(lua_toboolean(L, idx) ? "true" : "false");
     case LUA_TFUNCTION:
       return Value::ofFunction(std::make_shared<LuaCallable>(L, idx, stateOf(L).alive));
