@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <new>
 #include <sstream>
 
 #include "core/interrupt.hpp"
@@ -23,8 +24,37 @@
 
 namespace aster::lang {
 
+namespace {
+
+// Lua's allocator, wrapped to remember where the study was when an allocation
+// failed: Lua's "not enough memory" error carries no position.
+struct MemoryWatch {
+  lua_Alloc base = nullptr;
+  void* baseData = nullptr;
+  lua_State* L = nullptr;
+  char failedAt[512] = "";  // file:line of the last failure (no std::string: memory is short then)
+};
+
+void* watchedAlloc(void* data, void* block, std::size_t oldSize, std::size_t newSize) {
+  auto* w = static_cast<MemoryWatch*>(data);
+  void* out = w->base(w->baseData, block, oldSize, newSize);
+  if (!out && newSize > 0 && w->L) {
+    lua_Debug ar;  // "Sl" reads the call stack only, it allocates nothing
+    for (int level = 0; lua_getstack(w->L, level, &ar); ++level) {
+      if (!lua_getinfo(w->L, "Sl", &ar) || ar.currentline <= 0) continue;
+      const char* file = (ar.source && ar.source[0] == '@') ? ar.source + 1 : ar.short_src;
+      std::snprintf(w->failedAt, sizeof w->failedAt, "%s:%d", file, ar.currentline);
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 struct Interpreter::State {
   lua_State* L = nullptr;
+  MemoryWatch memory;
   Session* session = nullptr;
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
   std::map<std::string, std::vector<std::string>> sources;  // lines of each chunk run, by chunk name
@@ -370,6 +400,8 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
     lua_newtable(L);
     lua_pushboolean(L, 1);
     lua_setfield(L, -2, "aster_fin");
+  } catch (const std::bad_alloc&) {
+    pushFatal(L, fatalText(spec.name, where, "not enough memory (the command asks for more than the system gives it)"));
   } catch (const std::exception& e) {
     pushFatal(L, fatalText(spec.name, where, std::string("internal error: ") + e.what()));
   }
@@ -562,6 +594,9 @@ std::string generatedName(const Concept& c) {
 Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), session_(session) {
   lua_State* L = luaL_newstate();
   state_->L = L;
+  state_->memory.base = lua_getallocf(L, &state_->memory.baseData);
+  state_->memory.L = L;
+  lua_setallocf(L, watchedAlloc, &state_->memory);
   state_->session = &session;
   luaL_openlibs(L);
   lua_pushlightuserdata(L, state_.get());
@@ -668,7 +703,11 @@ int Interpreter::runString(const std::string& code, const std::string& chunkName
 
   std::string message;
   bool finished = false, interrupted = false;
-  if (lua_istable(L, -1)) {
+  if (status == LUA_ERRMEM) {
+    const std::string at = *state_->memory.failedAt ? state_->memory.failedAt
+                                                    : chunkName.substr(chunkName.rfind('@', 0) == 0 ? 1 : 0);
+    message = "<F> <LUA> " + at + ": not enough memory (the study asks for more than the system gives it)";
+  } else if (lua_istable(L, -1)) {
     lua_getfield(L, -1, "aster_fin");
     finished = lua_toboolean(L, -1);
     lua_pop(L, 1);
