@@ -49,6 +49,10 @@ int main(int argc, char** argv) {
   aster::solver::selectBlasKernels(argv);
   aster::solver::selectHugePages(argv);
   aster::solver::keepFactorWorkspaces();
+  if (const std::string error = aster::solver::reserveBlasBuffer(); !error.empty()) {
+    std::fprintf(stderr, "<F> <aster-lite> %s\n", error.c_str());
+    return 2;
+  }
   namespace fs = std::filesystem;
   aster::lang::Session session;
   std::string study, outputDir;
