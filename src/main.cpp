@@ -1,9 +1,11 @@
 // aster-lite: runs a code_aster-style study written in Lua.
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "core/interrupt.hpp"
@@ -49,6 +51,10 @@ int main(int argc, char** argv) {
   aster::solver::selectBlasKernels(argv);
   aster::solver::selectHugePages(argv);
   aster::solver::keepFactorWorkspaces();
+  if (const std::string error = aster::solver::reserveBlasBuffer(); !error.empty()) {
+    std::fprintf(stderr, "<F> <aster-lite> %s\n", error.c_str());
+    return 2;
+  }
   namespace fs = std::filesystem;
   aster::lang::Session session;
   std::string study, outputDir;
@@ -76,9 +82,14 @@ int main(int argc, char** argv) {
         const std::string spec = next("-u");
         const auto eq = spec.find('=');
         char* end = nullptr;
+        errno = 0;
         const long unit = std::strtol(spec.c_str(), &end, 10);
         if (eq == std::string::npos || end != spec.c_str() + eq || unit <= 0)
           return usageError("-u expects N=PATH with a positive unit number N, got '" + spec + "'");
+        // Units are C++ ints, as the UNITE keywords: a larger N would wrap to another unit.
+        if (errno == ERANGE || unit > std::numeric_limits<int>::max())
+          return usageError("-u expects N=PATH with a unit number N from 1 to " +
+                            std::to_string(std::numeric_limits<int>::max()) + ", got '" + spec + "'");
         session.units[static_cast<int>(unit)] = fs::absolute(spec.substr(eq + 1));
       } else if (a == "--doc") {
         const std::string file = next("--doc");

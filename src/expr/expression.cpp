@@ -6,6 +6,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <unordered_map>
 
 #include "core/error.hpp"
 
@@ -364,6 +366,15 @@ class ExpressionCompiler {
     throw Error(message + " in " + excerpt(e_.text_, column));
   }
 
+  // One more level of the parser's recursion (parentheses, calls, signs, powers):
+  // bounded, so that a pathological text cannot overflow the C++ stack.
+  void enter(const Token& t) {
+    if (++nesting_ > kMaxNesting)
+      fail("expression nested too deeply at column " + std::to_string(t.column) + " (more than " +
+               std::to_string(kMaxNesting) + " levels of parentheses, calls, signs and powers)",
+           t.column);
+  }
+
   const Token& peek() const { return tokens_[pos_]; }
   const Token& next() { return tokens_[pos_++]; }
 
@@ -416,7 +427,9 @@ class ExpressionCompiler {
   int parseFactor() {
     if (peek().kind == Tok::Plus || peek().kind == Tok::Minus) {
       const Token& t = next();
+      enter(t);
       const int operand = parseFactor();
+      --nesting_;
       return t.kind == Tok::Plus ? operand : operation(OpCode::Negate, t.column, {operand});
     }
     return parsePower();
@@ -427,7 +440,9 @@ class ExpressionCompiler {
     const int base = parsePrimary();
     if (peek().kind != Tok::Power) return base;
     const Token& t = next();
+    enter(t);
     const int exponent = parseFactor();
+    --nesting_;
     return operation(OpCode::Power, t.column, {base, exponent});
   }
 
@@ -438,8 +453,7 @@ class ExpressionCompiler {
       case Tok::Name: next(); return parseName(t);
       case Tok::LParen: {
         next();
-        if (++nesting_ > kMaxNesting) fail("expression nested too deeply at column " +
-                                           std::to_string(t.column), t.column);
+        enter(t);
         const int inner = parseSum();
         --nesting_;
         expectClosing(t, "'('");
@@ -503,6 +517,7 @@ class ExpressionCompiler {
 
   int parseCall(const Token& name, const FunctionInfo& f) {
     const Token& open = next();  // '('
+    enter(open);
     std::vector<int> args;
     if (peek().kind != Tok::RParen) {
       while (true) {
@@ -512,6 +527,7 @@ class ExpressionCompiler {
       }
     }
     expectClosing(open, "'" + name.text + "('");
+    --nesting_;
     const int count = static_cast<int>(args.size());
     if (count < f.minArgs || (f.maxArgs >= 0 && count > f.maxArgs)) {
       std::string expected = f.maxArgs < 0 ? "at least " + std::to_string(f.minArgs)
@@ -537,36 +553,63 @@ class ExpressionCompiler {
     maxDepth_ = std::max(maxDepth_, depth_);
   }
 
+  // Constants are finite: equal values of the same sign have the same bits
+  // (a map, not a search, for formulas with many distinct constants).
   std::int32_t constantIndex(double v) {
-    for (std::size_t i = 0; i < e_.constants_.size(); ++i)
-      if (e_.constants_[i] == v && std::signbit(e_.constants_[i]) == std::signbit(v))
-        return static_cast<std::int32_t>(i);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    const auto found = constantIndices_.find(bits);
+    if (found != constantIndices_.end()) return found->second;
     e_.constants_.push_back(v);
-    return static_cast<std::int32_t>(e_.constants_.size() - 1);
+    const auto index = static_cast<std::int32_t>(e_.constants_.size() - 1);
+    constantIndices_.emplace(bits, index);
+    return index;
   }
 
-  void emitNode(int index) {
-    const Node& n = nodes_[index];
+  // Iterative: a sum of many terms is a tree as deep as it is long.
+  void emitNode(int root) {
+    struct Pending {
+      int node;
+      std::size_t emitted;  // operands already emitted
+    };
+    std::vector<Pending> todo{{root, 0}};
+    while (!todo.empty()) {
+      Pending& p = todo.back();
+      const Node& n = nodes_[p.node];
+      if (p.emitted < operandsToEmit(n)) {
+        const int kid = n.kids[p.emitted++];
+        todo.push_back({kid, 0});  // p is invalid from here
+        continue;
+      }
+      todo.pop_back();
+      emitOperation(n);
+    }
+  }
+
+  static bool powerOfConstant(const Node& n, const std::vector<Node>& nodes) {
+    return n.op == OpCode::Power && nodes[n.kids[1]].op == OpCode::Constant;
+  }
+
+  std::size_t operandsToEmit(const Node& n) const {
+    return powerOfConstant(n, nodes_) ? 1 : n.kids.size();  // a constant exponent goes in the opcode
+  }
+
+  // The instruction of a node whose operands are on the stack.
+  void emitOperation(const Node& n) {
     switch (n.op) {
       case OpCode::Constant: push(OpCode::Constant, constantIndex(n.value), n.column, 0); return;
       case OpCode::Parameter: push(OpCode::Parameter, n.index, n.column, 0); return;
-      case OpCode::Power: {
-        const Node& exponent = nodes_[n.kids[1]];
-        if (exponent.op == OpCode::Constant) {
-          emitNode(n.kids[0]);
-          const double c = exponent.value;
-          if (c == 2.0) push(OpCode::Square, 0, n.column, 1);
-          else if (c == 3.0) push(OpCode::Cube, 0, n.column, 1);
-          else if (c == std::floor(c) && std::abs(c) <= 1024)
-            push(OpCode::PowerInteger, static_cast<std::int32_t>(c), n.column, 1);
-          else push(OpCode::PowerConstant, constantIndex(c), n.column, 1);
-          return;
-        }
-        break;
-      }
       default: break;
     }
-    for (int kid : n.kids) emitNode(kid);
+    if (powerOfConstant(n, nodes_)) {
+      const double c = nodes_[n.kids[1]].value;
+      if (c == 2.0) push(OpCode::Square, 0, n.column, 1);
+      else if (c == 3.0) push(OpCode::Cube, 0, n.column, 1);
+      else if (c == std::floor(c) && std::abs(c) <= 1024)
+        push(OpCode::PowerInteger, static_cast<std::int32_t>(c), n.column, 1);
+      else push(OpCode::PowerConstant, constantIndex(c), n.column, 1);
+      return;
+    }
     const int count = static_cast<int>(n.kids.size());
     const bool variadic = n.op == OpCode::Min || n.op == OpCode::Max;
     push(n.op, variadic ? count : 0, n.column, count);
@@ -577,6 +620,7 @@ class ExpressionCompiler {
   std::size_t pos_ = 0;
   std::vector<Node> nodes_;
   int nesting_ = 0;
+  std::unordered_map<std::uint64_t, std::int32_t> constantIndices_;
   int depth_ = 0;
   int maxDepth_ = 0;
   static constexpr int kMaxNesting = 200;

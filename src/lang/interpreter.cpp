@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -15,6 +16,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <new>
 #include <sstream>
 #include <thread>
 #include <type_traits>
@@ -32,8 +34,37 @@
 
 namespace aster::lang {
 
+namespace {
+
+// Lua's allocator, wrapped to remember where the study was when an allocation
+// failed: Lua's "not enough memory" error carries no position.
+struct MemoryWatch {
+  lua_Alloc base = nullptr;
+  void* baseData = nullptr;
+  lua_State* L = nullptr;
+  char failedAt[512] = "";  // file:line of the last failure (no std::string: memory is short then)
+};
+
+void* watchedAlloc(void* data, void* block, std::size_t oldSize, std::size_t newSize) {
+  auto* w = static_cast<MemoryWatch*>(data);
+  void* out = w->base(w->baseData, block, oldSize, newSize);
+  if (!out && newSize > 0 && w->L) {
+    lua_Debug ar;  // "Sl" reads the call stack only, it allocates nothing
+    for (int level = 0; lua_getstack(w->L, level, &ar); ++level) {
+      if (!lua_getinfo(w->L, "Sl", &ar) || ar.currentline <= 0) continue;
+      const char* file = (ar.source && ar.source[0] == '@') ? ar.source + 1 : ar.short_src;
+      std::snprintf(w->failedAt, sizeof w->failedAt, "%s:%d", file, ar.currentline);
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 struct Interpreter::State {
   lua_State* L = nullptr;
+  MemoryWatch memory;
   Session* session = nullptr;
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
   std::map<std::string, std::vector<std::string>> sources;  // lines of each chunk run, by chunk name
@@ -185,7 +216,11 @@ Value toValue(lua_State* L, int idx) {
     case LUA_TNUMBER:
       if (lua_isinteger(L, idx)) return Value::ofInteger(lua_tointeger(L, idx));
       return Value::ofReal(lua_tonumber(L, idx));
-    case LUA_TSTRING: return Value::ofText(lua_tostring(L, idx));
+    case LUA_TSTRING: {  // whole, NUL bytes included: the validator refuses those by keyword name
+      std::size_t size = 0;
+      const char* text = lua_tolstring(L, idx, &size);
+      return Value::ofText(std::string(text, size));
+    }
     case LUA_TBOOLEAN: return Value::other(lua_toboolean(L, idx) ? "true" : "false");
     case LUA_TFUNCTION:
       return Value::ofFunction(std::make_shared<LuaCallable>(L, idx, stateOf(L).alive));
@@ -216,11 +251,21 @@ bool hasStringKeys(lua_State* L, int idx) {
   return false;
 }
 
-Keywords toKeywords(lua_State* L, int idx, const std::string& path);
+// code_aster's keyword trees are 3 tables deep (the call, a factor keyword, a
+// list of its occurrences); a deeper or cyclic table is a mistake, and reading
+// it would overflow the Lua and C stacks.
+constexpr std::size_t kMaxKeywordDepth = 20;
+
+// The tables being read, outermost first, with their keyword paths.
+using OpenTables = std::vector<std::pair<const void*, std::string>>;
+
+Keywords toKeywords(lua_State* L, int idx, const std::string& path, OpenTables& open);
 
 // Fills `kw[key]` from the Lua value at idx: a scalar or list of scalars (simple
-// keyword), a table of keywords or a list of them (factor keyword).
-void addEntry(lua_State* L, int idx, const std::string& key, const std::string& path, Keywords& kw) {
+// keyword), a table of keywords or a list of them (factor keyword). Raw access
+// only: a metamethod could raise a Lua error across these C++ frames.
+void addEntry(lua_State* L, int idx, const std::string& key, const std::string& path, Keywords& kw,
+              OpenTables& open) {
   idx = lua_absindex(L, idx);
   if (!isPlainTable(L, idx)) {
     kw.setSimple(key, {toValue(L, idx)});
@@ -228,10 +273,10 @@ void addEntry(lua_State* L, int idx, const std::string& key, const std::string& 
   }
   const std::string sub = path.empty() ? key : path + "/" + key;
   if (hasStringKeys(L, idx)) {
-    kw.setFactor(key, {toKeywords(L, idx, sub)});
+    kw.setFactor(key, {toKeywords(L, idx, sub, open)});
     return;
   }
-  const lua_Integer n = luaL_len(L, idx);
+  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, idx));
   bool allTables = n > 0;
   for (lua_Integer i = 1; i <= n && allTables; ++i) {
     lua_rawgeti(L, idx, i);
@@ -242,7 +287,7 @@ void addEntry(lua_State* L, int idx, const std::string& key, const std::string& 
     std::vector<Keywords> occ;
     for (lua_Integer i = 1; i <= n; ++i) {
       lua_rawgeti(L, idx, i);
-      occ.push_back(toKeywords(L, -1, sub + "[" + std::to_string(i) + "]"));
+      occ.push_back(toKeywords(L, -1, sub + "[" + std::to_string(i) + "]", open));
       lua_pop(L, 1);
     }
     kw.setFactor(key, std::move(occ));
@@ -257,8 +302,20 @@ void addEntry(lua_State* L, int idx, const std::string& key, const std::string& 
   kw.setSimple(key, std::move(vals));
 }
 
-Keywords toKeywords(lua_State* L, int idx, const std::string& path) {
+Keywords toKeywords(lua_State* L, int idx, const std::string& path, OpenTables& open) {
   idx = lua_absindex(L, idx);
+  const std::string where = path.empty() ? std::string("the command's table") : "keyword " + path;
+  const void* self = lua_topointer(L, idx);
+  for (const auto& [table, name] : open)
+    if (table == self)
+      throw ValidationError(path, where + " is " + (name.empty() ? std::string("the command's table") : name) +
+                                      " again: a table of keywords cannot contain itself");
+  if (open.size() >= kMaxKeywordDepth)
+    throw ValidationError(path, where + " is nested " + std::to_string(open.size()) +
+                                    " tables deep; a command's keywords are at most 3 deep");
+  // A few slots per level stay on the Lua stack while the levels below are read.
+  if (!lua_checkstack(L, 8)) throw ValidationError(path, where + ": the Lua stack is full");
+  open.emplace_back(self, path);
   // Sorted keys: Lua's traversal order varies between runs, messages must not.
   std::vector<std::string> keys;
   lua_pushnil(L);
@@ -270,18 +327,31 @@ Keywords toKeywords(lua_State* L, int idx, const std::string& path) {
                                       ", got a value without a keyword name (a list where a table of keywords "
                                       "was expected?)");
     }
-    keys.push_back(lua_tostring(L, -2));
+    std::size_t size = 0;
+    const char* key = lua_tolstring(L, -2, &size);
+    keys.emplace_back(key, size);
+    if (keys.back().find('\0') != std::string::npos)
+      throw ValidationError(path, "keyword name '" + visibleText(keys.back()) + "'" +
+                                      (path.empty() ? std::string() : " in " + path) +
+                                      " contains a NUL byte ('\\0')");
     lua_pop(L, 1);
   }
   std::sort(keys.begin(), keys.end());
   Keywords kw;
   kw.path = path;
   for (const auto& k : keys) {
-    lua_getfield(L, idx, k.c_str());
-    addEntry(L, -1, k, path, kw);
+    lua_pushlstring(L, k.data(), k.size());
+    lua_rawget(L, idx);
+    addEntry(L, -1, k, path, kw, open);
     lua_pop(L, 1);
   }
+  open.pop_back();
   return kw;
+}
+
+Keywords toKeywords(lua_State* L, int idx, const std::string& path) {
+  OpenTables open;
+  return toKeywords(L, idx, path, open);
 }
 
 // The study's file:line of the innermost Lua function at or above `level`
@@ -300,17 +370,44 @@ std::string callSite(lua_State* L, int level = 1) {
 
 // The variable the command's result is assigned to, read from the calling line
 // as code_aster's supervisor reads the .comm file: "RESU = STAT_NON_LINE{" gives
-// RESU (also with `local`); anything else (a table field, an argument) gives "".
+// RESU (also with `local`, or after a `;`); anything else (a table field, an
+// argument) gives "". A plain scan, linear in the line's length (std::regex
+// recursion overflows the stack on long lines).
 std::string assignedName(lua_State* L, const std::string& command) {
   lua_Debug ar;
   if (!lua_getstack(L, 1, &ar) || !lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0 || !ar.source) return "";
   const auto& sources = stateOf(L).sources;
   const auto it = sources.find(ar.source);
   if (it == sources.end() || ar.currentline > static_cast<int>(it->second.size())) return "";
-  const std::regex assignment("(?:^|[;\\s])(?:local\\s+)?([A-Za-z_][A-Za-z0-9_]*)\\s*=\\s*" + command + "\\s*[{(]");
-  std::smatch m;
   const std::string& line = it->second[ar.currentline - 1];
-  return std::regex_search(line, m, assignment) ? m[1].str() : "";
+  const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  const auto nameChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; };
+  const std::size_t n = line.size();
+  // The first NAME at the start, after a blank or after ';', followed by `= COMMAND {` or `= COMMAND (`.
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!nameChar(line[i]) || std::isdigit(static_cast<unsigned char>(line[i])) ||
+        (i > 0 && line[i - 1] != ';' && !space(line[i - 1])))
+      continue;
+    std::size_t end = i;
+    while (end < n && nameChar(line[end])) ++end;
+    std::size_t k = end;
+    while (k < n && space(line[k])) ++k;
+    if (k == n || line[k] != '=') {
+      i = end - 1;  // no name starts inside this one
+      continue;
+    }
+    ++k;
+    while (k < n && space(line[k])) ++k;
+    if (line.compare(k, command.size(), command) != 0) {
+      i = end - 1;
+      continue;
+    }
+    k += command.size();
+    while (k < n && space(line[k])) ++k;
+    if (k < n && (line[k] == '{' || line[k] == '(')) return line.substr(i, end - i);
+    i = end - 1;
+  }
+  return "";
 }
 
 // Error objects carried through lua_error to the top level. Every <F> is
@@ -452,6 +549,8 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
   } catch (const StudyFinished&) {
     stateOf(L).stop = State::Stop::Finish;
     pushStop(L, 1);
+  } catch (const std::bad_alloc&) {
+    pushFatal(L, fatalText(spec.name, where, "not enough memory (the command asks for more than the system gives it)"));
   } catch (const std::exception& e) {
     pushFatal(L, fatalText(spec.name, where, std::string("internal error: ") + e.what()));
   }
@@ -471,11 +570,26 @@ int callF(lua_State* L) {  // _F{...} as in code_aster: a factor keyword occurre
   return 1;
 }
 
-int callCO(lua_State* L) {  // CO('name'): a concept a macro-command will create
-  const char* name = luaL_checkstring(L, 1);
+// Returns 1 with the new name pushed, or -1 with an error object pushed.
+int coImpl(lua_State* L) {
+  std::size_t size = 0;
+  const char* text = lua_tolstring(L, 1, &size);
+  std::string name = text ? std::string(text, size) : std::string();
+  if (!text || name.find('\0') != std::string::npos) {
+    pushFatal(L, fatalText("CO", callSite(L),
+                           text ? "the name '" + visibleText(name) + "' contains a NUL byte ('\\0')"
+                                : "CO expects the name of the concept to create, CO('NAME'), got " +
+                                      toValue(L, 1).describe()));
+    return -1;
+  }
   void* mem = lua_newuserdatauv(L, sizeof(NewNameBox), 0);
-  new (mem) NewNameBox{kLiveBox, name};
+  new (mem) NewNameBox{kLiveBox, std::move(name)};
   luaL_setmetatable(L, kNewNameMeta);
+  return 1;
+}
+
+int callCO(lua_State* L) {  // CO('name'): a concept a macro-command will create
+  if (coImpl(L) < 0) return lua_error(L);
   return 1;
 }
 
@@ -530,7 +644,12 @@ int methodImpl(lua_State* L, const std::string& method) {
     const Method* m = Operators::instance().findMethod(self->ptr->typeName(), method);
     if (!m) throw Error("internal error: method " + method + " vanished");
     std::vector<Value> args;
-    for (int i = 2; i <= lua_gettop(L); ++i) args.push_back(toValue(L, i));
+    for (int i = 2; i <= lua_gettop(L); ++i) {
+      args.push_back(toValue(L, i));
+      if (args.back().kind == Value::Kind::Text && args.back().text.find('\0') != std::string::npos)
+        throw Error("argument " + std::to_string(i - 1) + " = " + args.back().describe() +
+                    " contains a NUL byte ('\\0')");
+    }
     Datum d;
     {
       const interrupt::Watch safe(false);
@@ -981,6 +1100,9 @@ void sandbox(lua_State* L) {
 Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), session_(session) {
   lua_State* L = luaL_newstate();
   state_->L = L;
+  state_->memory.base = lua_getallocf(L, &state_->memory.baseData);
+  state_->memory.L = L;
+  lua_setallocf(L, watchedAlloc, &state_->memory);
   state_->session = &session;
   *static_cast<State**>(lua_getextraspace(L)) = state_.get();  // copied into every coroutine
   openLibraries(L, session.unsafeLua);
@@ -1125,7 +1247,12 @@ int Interpreter::runString(const std::string& code, const std::string& chunkName
 
   std::string message;  // the error that ended the study, if any
   bool finished = false;
-  if (status != LUA_OK) {
+  if (status == LUA_ERRMEM) {
+    const std::string at = *st.memory.failedAt ? st.memory.failedAt
+                                               : chunkName.substr(chunkName.rfind('@', 0) == 0 ? 1 : 0);
+    message = "<F> <LUA> " + at + ": not enough memory (the study asks for more than the system gives it)";
+    lua_pop(L, 1);
+  } else if (status != LUA_OK) {
     if (lua_istable(L, -1)) {
       lua_getfield(L, -1, "aster_fin");
       finished = lua_toboolean(L, -1);

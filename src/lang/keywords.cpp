@@ -6,15 +6,31 @@
 
 namespace aster::lang {
 
+std::string visibleText(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\0')
+      out += "\\0";
+    else
+      out += c;
+  }
+  return out;
+}
+
 std::string Value::describe() const {
   std::ostringstream s;
   switch (kind) {
     case Kind::Integer: s << integer; break;
-    case Kind::Real: s << real; break;
-    case Kind::Text: s << "'" << text << "'"; break;
+    case Kind::Real:
+      if (std::isnan(real))
+        s << "nan";  // not "-nan", which 0/0 gives on x86
+      else
+        s << real;
+      break;
+    case Kind::Text: s << "'" << visibleText(text) << "'"; break;
     case Kind::Concept: s << "a " << (concept ? concept->typeName() : "null concept"); break;
     case Kind::Function: s << "a Lua function"; break;
-    case Kind::NewName: s << "CO('" << text << "')"; break;
+    case Kind::NewName: s << "CO('" << visibleText(text) << "')"; break;
     case Kind::Other: s << text; break;
   }
   return s.str();

@@ -1,6 +1,7 @@
 #include "lang/validator.hpp"
 
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "core/suggest.hpp"
@@ -33,7 +34,11 @@ bool convert(const Value& in, const std::vector<std::string>& types, Value& out)
       out = Value::ofReal(in.real);
       return true;
     }
-    if (t == "I" && in.isNumber() && std::floor(in.real) == in.real && std::fabs(in.real) < 9e15) {
+    if (t == "I" && in.kind == Value::Kind::Integer) {
+      out = in;
+      return true;
+    }
+    if (t == "I" && in.kind == Value::Kind::Real && std::floor(in.real) == in.real && std::fabs(in.real) < 9e15) {
       out = Value::ofInteger(static_cast<long long>(in.real));
       return true;
     }
@@ -193,6 +198,7 @@ class LevelValidator {
       Value v;
       if (!convert(given[i], k.types, v))
         fail(k.name, "keyword " + k.name + item + " expects " + what + ", got " + given[i].describe());
+      checkRepresentable(k, item, v);
       if (!k.into.empty()) {
         bool ok = false;
         for (const auto& a : k.into) ok |= sameValue(a, v);
@@ -216,6 +222,22 @@ class LevelValidator {
       typed.push_back(v);
     }
     out.setSimple(k.name, typed);
+  }
+
+  // What operators cannot take as it is, refused here by keyword name rather than
+  // found later with a misleading message: integers beyond the C++ int operators
+  // read (they would be truncated), reals that are not finite (0/0, 1/0 or
+  // math.huge in the study), texts with a NUL byte (C strings end there).
+  void checkRepresentable(const KeywordSpec& k, const std::string& item, const Value& v) const {
+    const std::string named = "keyword " + k.name + item + " = " + v.describe();
+    if (v.kind == Value::Kind::Integer &&
+        (v.integer < std::numeric_limits<int>::min() || v.integer > std::numeric_limits<int>::max()))
+      fail(k.name, named + " is out of the range of integers (" + std::to_string(std::numeric_limits<int>::min()) +
+                       " to " + std::to_string(std::numeric_limits<int>::max()) + ")");
+    if (v.kind == Value::Kind::Real && !std::isfinite(v.real))
+      fail(k.name, named + " is not a finite number (0/0, 1/0 or math.huge in the study?)");
+    if ((v.kind == Value::Kind::Text || v.kind == Value::Kind::NewName) && v.text.find('\0') != std::string::npos)
+      fail(k.name, named + " contains a NUL byte ('\\0')");
   }
 
   void factor(const KeywordSpec& k, const Keywords& call, Keywords& out) {

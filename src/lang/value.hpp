@@ -30,4 +30,7 @@ struct Value {
   std::string describe() const;
 };
 
+// A text as a message shows it: NUL bytes (which Lua strings may hold) as \0.
+std::string visibleText(const std::string& text);
+
 }  // namespace aster::lang

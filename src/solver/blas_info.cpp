@@ -3,9 +3,12 @@
 #include <dlfcn.h>
 #include <limits.h>
 #include <stdlib.h>
+#include <sys/mman.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cctype>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -122,7 +125,58 @@ int startupBlasThreads() {
 void chooseBlasThreads(int unknowns) {
   const BlasThreadCount& blas = blasThreads();
   if (!blas.get || userChoseBlasThreads()) return;
-  blas.set(unknowns < kSmallSystem ? 1 : startupBlasThreads());
+  blas.set(unknowns < kSmallSystem ? 1 : blasCallersThatFit(startupBlasThreads()));
+}
+
+namespace {
+// BUFFER_SIZE of OpenBLAS on x86-64 (common_x86_64.h: 32 << 22), with a page of slack.
+constexpr std::size_t kBlasBuffer = (std::size_t{32} << 22) + 4096;
+
+bool addressSpaceLimited() {
+  static const bool limited = [] {
+    rlimit limit{};
+    return dlsym(RTLD_DEFAULT, "openblas_get_config") && getrlimit(RLIMIT_AS, &limit) == 0 &&
+           limit.rlim_cur != RLIM_INFINITY;
+  }();
+  return limited;
+}
+
+// Whether `bytes` more of address space can be mapped now (mapped, then given back).
+bool addressSpaceLeft(std::size_t bytes) {
+  void* p = mmap(nullptr, bytes, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  if (p == MAP_FAILED) return false;
+  munmap(p, bytes);
+  return true;
+}
+}  // namespace
+
+std::string reserveBlasBuffer() {
+  if (!addressSpaceLimited()) return "";
+  using Potrf = void (*)(const char*, const int*, double*, const int*, int*);
+  auto potrf = reinterpret_cast<Potrf>(dlsym(RTLD_DEFAULT, "dpotrf_"));
+  if (!potrf) return "";
+  if (!addressSpaceLeft(kBlasBuffer)) {
+    rlimit limit{};
+    getrlimit(RLIMIT_AS, &limit);
+    return "not enough memory: the address space is limited to " + std::to_string(limit.rlim_cur >> 20) +
+           " MiB (ulimit -v, prlimit --as), too little for OpenBLAS's work buffer of " +
+           std::to_string(kBlasBuffer >> 20) + " MiB";
+  }
+  double one = 1.0;  // a 1 x 1 factorization: OpenBLAS maps its buffer and keeps it
+  const int n = 1;
+  int info = 0;
+  potrf("L", &n, &one, &n, &info);
+  return "";
+}
+
+int blasCallersThatFit(int wanted) {
+  if (wanted <= 1 || !addressSpaceLimited()) return wanted;
+  // The first buffer is there (reserveBlasBuffer); room for the others, as many as fit.
+  // Buffers OpenBLAS already mapped for earlier calls are counted as new: fewer
+  // threads than possible, never a hang.
+  for (int more = wanted - 1; more > 0; --more)
+    if (addressSpaceLeft(static_cast<std::size_t>(more) * kBlasBuffer)) return more + 1;
+  return 1;
 }
 
 ScopedBlasThreads::ScopedBlasThreads(int threads) {

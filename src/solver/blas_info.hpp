@@ -47,6 +47,17 @@ void startBlasOnOneThread();
 // startBlasOnOneThread re-executed it): all cores unless the user set it; 1 for another BLAS.
 int startupBlasThreads();
 
+// OpenBLAS (Debian 12's 0.3.21) maps a 128 MiB work buffer for each BLAS call in flight
+// and for each of its threads, keeps it for the next calls, and retries forever when
+// the mapping fails because the address space is limited (ulimit -v, prlimit --as;
+// OpenBLAS issue 5289): the program would hang. Under such a limit,
+// reserveBlasBuffer maps the first buffer at start-up, while there is room, and
+// returns an error message when there is none ("" when done or nothing to do);
+// blasCallersThatFit(n) is how many of n concurrent BLAS callers (or OpenBLAS
+// threads) the address space left can take, at least 1 (n without a limit).
+std::string reserveBlasBuffer();
+int blasCallersThatFit(int wanted);
+
 // While alive, OpenBLAS runs every call on the calling thread with `threads` threads
 // (openblas_set_num_threads; the previous count is restored after). The multifrontal
 // factorization runs independent subtrees on separate threads, each with a one-thread

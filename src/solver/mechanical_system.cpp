@@ -1,12 +1,14 @@
 #include "solver/mechanical_system.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <map>
 #include <tuple>
 
 #include "core/error.hpp"
+#include "expr/expression.hpp"
 #include "fem/mesh_cell_type.hpp"
 #include "mechanics/loads.hpp"
 #include "mesh/cell_type.hpp"
@@ -38,6 +40,21 @@ double loadValue(const model::SpaceFunction& f, const char* load, const char* co
 }
 
 }  // namespace
+
+double AppliedLoad::factor(double t) const {
+  if (!multiplier) return 1.0;
+  const double v = multiplier->evaluate(&t);
+  if (std::isfinite(v)) return v;
+  std::string why = "the function returns " + expr::numberText(v);
+  if (const auto* e = dynamic_cast<const expr::Expression*>(multiplier.get())) {
+    try {
+      e->evaluateChecked(&t);
+    } catch (const Error& failure) {
+      why = failure.what();
+    }
+  }
+  throw Error("FONC_MULT at INST = " + expr::numberText(t) + ": " + why);
+}
 
 MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::move(problem)) {
   const model::Model& m = *problem_.model;

@@ -38,7 +38,8 @@ struct AppliedLoad {
   // TYPE_CHARGE='SUIV': its pressures act on the deformed edges (and enter the
   // tangent); otherwise (FIXE_CSTE) they are dead loads on the reference edges.
   bool follower = false;
-  double factor(double t) const { return multiplier ? multiplier->evaluate(&t) : 1.0; }
+  // Throws aster::Error when FONC_MULT is not a finite number at t.
+  double factor(double t) const;
 };
 
 struct MechanicalProblem {

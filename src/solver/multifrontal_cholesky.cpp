@@ -56,7 +56,7 @@ void addIntoUpdate(const double* update, int u, const int* relative, int split, 
 template <class Piece>
 void inParallel(int parts, Piece&& piece) {
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static, 1) num_threads(parts)
+#pragma omp parallel for schedule(static, 1) num_threads(blasCallersThatFit(parts))
 #endif
   for (int p = 0; p < parts; ++p) piece(p);
 }
@@ -406,7 +406,7 @@ int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, doubl
   std::vector<int> failure(threads, INT_MAX);
   std::vector<char> outOfMemory(threads, 0);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static, 1) num_threads(threads)
+#pragma omp parallel for schedule(static, 1) num_threads(blasCallersThatFit(threads))
 #endif
   for (int t = 0; t < threads; ++t) {
     try {

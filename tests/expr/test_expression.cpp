@@ -132,3 +132,26 @@ TEST(Expression, EvaluatesWithDualNumbers) {
   EXPECT_DOUBLE_EQ(r.h[1][0], 2 * 1.5);
   EXPECT_DOUBLE_EQ(r.h[1][1], -std::sin(0.5));
 }
+
+// Long but legal formulas (generated ones can be): a sum of 300 000 terms is a
+// tree as deep as it is long, compiled without recursion, evaluated natively and
+// with dual numbers; 100 000 distinct constants compile in linear time.
+TEST(Expression, LongSumsCompileAndEvaluate) {
+  std::string text = "X";
+  for (int i = 0; i < 300000; ++i) text += "+X";
+  auto e = Expression::compile(text, {"X"});
+  EXPECT_LE(e->stackDepth(), 2);
+  EXPECT_EQ((*e)({1.5}), 1.5 * 300001);
+  EXPECT_EQ(e->evaluateChecked(std::vector<double>{1.5}.data()), 1.5 * 300001);
+  using D = aster::expr::Dual2<1>;
+  const D x[1] = {D::variable(2.0, 0)};
+  const D r = e->evaluateT(x);
+  EXPECT_EQ(r.v, 2.0 * 300001);
+  EXPECT_EQ(r.g[0], 300001.0);
+  EXPECT_EQ(r.h[0][0], 0.0);
+
+  std::string constants = "X";
+  for (int i = 1; i <= 100000; ++i) constants += "+X*" + std::to_string(i);
+  auto c = Expression::compile(constants, {"X"});
+  EXPECT_EQ((*c)({1.0}), 1.0 + 100000.0 * 100001.0 / 2.0);
+}

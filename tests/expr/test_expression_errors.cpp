@@ -99,6 +99,17 @@ TEST(ExpressionErrors, MessagesQuoteTheText) {
   // Nesting is bounded instead of overflowing the parser's stack.
   EXPECT_CONTAINS(compileError(std::string(1000, '(') + "1" + std::string(1000, ')')),
                   "nested too deeply");
+  // So are chains of signs and powers and nested calls, each a level of recursion.
+  std::string powers = "X";
+  for (int i = 0; i < 100000; ++i) powers += "**X";
+  EXPECT_CONTAINS(compileError(powers), "nested too deeply at column 602 (more than 200 levels");
+  EXPECT_CONTAINS(compileError(std::string(1000000, '-') + "X"), "nested too deeply at column 201");
+  std::string calls;
+  for (int i = 0; i < 100000; ++i) calls += "sin(";
+  calls += "X" + std::string(100000, ')');
+  EXPECT_CONTAINS(compileError(calls), "nested too deeply at column 804");
+  // 200 levels are allowed.
+  EXPECT_NO_THROW(Expression::compile(std::string(200, '-') + "X", {"X"}));
 }
 
 TEST(ExpressionErrors, CheckedEvaluation) {

@@ -393,4 +393,45 @@ TEST(Interpreter, CtrlCStopsLuaCode) {
     EXPECT_EQ(r.status, kInterruptedStatus) << code << r.err;
     EXPECT_NE(r.err.find("interrupted (SIGINT)"), std::string::npos) << code << r.err;
   }
+
+// The name a result is assigned to is read from the calling line; a 100 000-character
+// name overflowed the stack of the std::regex that read it.
+TEST(Interpreter, LongVariableNameOnTheLeftOfACommand) {
+  const std::string name(100000, 'A');
+  const StudyRun r = run(name + " = DEBUT{}; local " + name + "B = DEBUT(); print('ok')\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "ok\n");
+}
+
+// Keyword tables too deep or cyclic are refused by the validator's message,
+// before the reading overflows the Lua stack (40 levels) or recurses forever.
+TEST(Interpreter, DeepOrCyclicKeywordTablesAreRefused) {
+  StudyRun r = run("local t = {NIV_PUB_WEB = 'INTERNET'}\nfor _ = 1, 40 do t = {CODE = t} end\nDEBUT(t)\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("<F> <DEBUT> etude.lua:3: keyword CODE/CODE/", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(" is nested 20 tables deep; a command's keywords are at most 3 deep\n"), std::string::npos)
+      << r.err;
+  r = run("local code = {}\ncode.NIV_PUB_WEB = code\nDEBUT{CODE = code}\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <DEBUT> etude.lua:3: keyword CODE/NIV_PUB_WEB is CODE again: a table of keywords cannot "
+                   "contain itself\n");
+  // The same table twice, side by side, is no cycle.
+  r = run("local code = {NIV_PUB_WEB = 'INTERNET'}\nDEBUT{CODE = code}\nDEBUT{CODE = {code}}\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
+// Lua strings may hold NUL bytes; names and texts would be cut at the first one.
+TEST(Interpreter, NulBytesInKeysTextsAndNamesAreRefused) {
+  StudyRun r = run("DEBUT{CODE = {['NIV_PUB_WEB\\0X'] = 'INTERNET'}}\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <DEBUT> etude.lua:1: keyword name 'NIV_PUB_WEB\\0X' in CODE contains a NUL byte ('\\0')\n");
+  r = run("DEBUT{CODE = {NIV_PUB_WEB = 'INTERNET\\0'}}\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <DEBUT> etude.lua:1: CODE: keyword NIV_PUB_WEB = 'INTERNET\\0' contains a NUL byte ('\\0')\n");
+  r = run("local x = 1\nlocal name = CO('RES\\0U')\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <CO> etude.lua:2: the name 'RES\\0U' contains a NUL byte ('\\0')\n");
+  r = run("local name = CO({})\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "<F> <CO> etude.lua:1: CO expects the name of the concept to create, CO('NAME'), got a table\n");
 }

@@ -2,6 +2,8 @@
 // defaults are filled; numbers are typed as the catalogue says.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "lang/catalogue.hpp"
 #include "lang/validator.hpp"
 
@@ -138,6 +140,49 @@ TEST(Validator, BoundsOnNumbers) {
   Keywords call = minimalCall();
   call.setSimple("COEF", {Value::ofReal(-2)});
   EXPECT_EQ(rejection(call), "keyword COEF = -2 is below its minimum 0");
+}
+
+// Integers are read by operators as C++ ints: a larger one would be truncated
+// (4294967298 would be 2), so it is refused by keyword name.
+TEST(Validator, IntegersOutsideTheRangeOfIntAreRefused) {
+  Keywords call = minimalCall();
+  Keywords newton;
+  newton.setSimple("REAC_ITER", {Value::ofInteger(4294967298LL)});
+  call.setFactor("NEWTON", {newton});
+  std::string keyword;
+  EXPECT_EQ(rejection(call, &keyword),
+            "NEWTON: keyword REAC_ITER = 4294967298 is out of the range of integers (-2147483648 to 2147483647)");
+  EXPECT_EQ(keyword, "NEWTON/REAC_ITER");
+  newton.setSimple("REAC_ITER", {Value::ofReal(-4294967296.0)});  // a real with an integer value
+  call.setFactor("NEWTON", {newton});
+  EXPECT_EQ(rejection(call),
+            "NEWTON: keyword REAC_ITER = -4294967296 is out of the range of integers (-2147483648 to 2147483647)");
+  newton.setSimple("REAC_ITER", {Value::ofInteger(2147483647)});
+  call.setFactor("NEWTON", {newton});
+  EXPECT_EQ(validate(essai(), call).factor("NEWTON")[0].integer("REAC_ITER"), 2147483647);
+  newton.setSimple("REAC_ITER", {Value::ofInteger(-2147483648LL)});
+  call.setFactor("NEWTON", {newton});
+  EXPECT_EQ(validate(essai(), call).factor("NEWTON")[0].integer("REAC_ITER"), -2147483648LL);
+}
+
+// NaN and infinities (0/0, 1/0, math.huge in a study) in any real keyword.
+TEST(Validator, NonFiniteRealsAreRefused) {
+  Keywords call = minimalCall();
+  call.erase("COEF");
+  call.setSimple("VALE", {Value::ofReal(1.0), Value::ofReal(std::nan("")), Value::ofReal(2.0)});
+  EXPECT_EQ(rejection(call), "keyword VALE (value 2) = nan is not a finite number (0/0, 1/0 or math.huge in the study?)");
+  call.setSimple("VALE", {Value::ofReal(1.0), Value::ofReal(-HUGE_VAL)});
+  EXPECT_EQ(rejection(call), "keyword VALE (value 2) = -inf is not a finite number (0/0, 1/0 or math.huge in the study?)");
+  call = minimalCall();
+  call.setSimple("COEF", {Value::ofReal(HUGE_VAL)});
+  EXPECT_EQ(rejection(call), "keyword COEF = inf is not a finite number (0/0, 1/0 or math.huge in the study?)");
+}
+
+// C strings end at a NUL byte: a text holding one would be cut short silently.
+TEST(Validator, TextsWithANulByteAreRefused) {
+  Keywords call = minimalCall();
+  call.setFactor("AFFE", {affe("GROUP_MA", Value::ofText(std::string("HAUT\0BAS", 8)))});
+  EXPECT_EQ(rejection(call), "AFFE[1]: keyword GROUP_MA = 'HAUT\\0BAS' contains a NUL byte ('\\0')");
 }
 
 TEST(Validator, NumberOfValues) {

@@ -1,4 +1,5 @@
 # Runs EXE on STUDY; checks the exit status and output the study's header asks for.
+# PREFIX (optional, a list): a command that runs EXE (prlimit --as=...).
 if(NOT DEFINED EXPECT_EXIT)
   file(STRINGS ${STUDY} header LIMIT_COUNT 5)
   foreach(line ${header})
@@ -9,7 +10,7 @@ if(NOT DEFINED EXPECT_EXIT)
     endif()
   endforeach()
 endif()
-execute_process(COMMAND ${EXE} --output-dir ${OUT} ${STUDY}
+execute_process(COMMAND ${PREFIX} ${EXE} --output-dir ${OUT} ${STUDY}
   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
 if(NOT "${status}" STREQUAL "${EXPECT_EXIT}")

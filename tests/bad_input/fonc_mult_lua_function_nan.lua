@@ -1,0 +1,16 @@
+-- expect-exit: 2
+-- expect-output: <F> <STAT_NON_LINE> .*fonc_mult_lua_function_nan\.lua:14: FONC_MULT at INST = 1: the function returns nan
+-- A FONC_MULT written as a Lua function that returns NaN at INST = 1.
+DEBUT{}
+DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
+MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
+MO = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
+MAT = DEFI_MATERIAU{ELAS = {E = 1000.0, NU = 0.3}}
+CM = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MAT}}
+L = DEFI_LIST_REEL{DEBUT = 0.0, INTERVALLE = {JUSQU_A = 1.0, NOMBRE = 2}}
+BC = AFFE_CHAR_MECA{MODELE = MO, DDL_IMPO = {GROUP_MA = 'GAUCHE', DX = 0.0, DY = 0.0}}
+F = AFFE_CHAR_MECA{MODELE = MO, FORCE_CONTOUR = {GROUP_MA = 'HAUT', FY = -1.0}}
+RAMPE = FORMULE{VALE = function(INST) if INST < 1 then return INST end return 0/0 end, NOM_PARA = {'INST'}}
+R = STAT_NON_LINE{MODELE = MO, CHAM_MATER = CM, EXCIT = {{CHARGE = BC}, {CHARGE = F, FONC_MULT = RAMPE}},
+  COMPORTEMENT = {RELATION = 'ELAS'}, INCREMENT = {LIST_INST = L}}
+FIN{}
