@@ -198,13 +198,13 @@ IMPR_TABLE{TABLE=T, FORMAT='CSV', NOM_PARA='H', FORMAT_R='F5.2'}
 TEST(OutputFiles, TwoPlotsToOneUnitKeepBoth) {
   const fs::path dir = freshDir("plots_one_unit");
   const auto r = run(dir, dir / "out", R"(
-DEFI_FICHIER{UNITE=29, FICHIER='courbe.svg'}
+DEFI_FICHIER{UNITE=29, FICHIER='out/courbe.svg'}
 IMPR_FONCTION{FORMAT='SVG', UNITE=29, COURBE={ABSCISSE={0, 1}, ORDONNEE={0, 1}}}
 IMPR_FONCTION{FORMAT='SVG', UNITE=29, COURBE={ABSCISSE={0, 1}, ORDONNEE={0, 2}}}
 )");
   ASSERT_EQ(r.status, 0) << r.err << r.out;
   EXPECT_EQ(readFile(dir / "out" / "courbe_1.dat"), "0 0\n1 1\n");
   EXPECT_EQ(readFile(dir / "out" / "courbe-2_1.dat"), "0 0\n1 2\n");
-  EXPECT_GT(fs::file_size(dir / "courbe.svg"), 100u);
-  EXPECT_GT(fs::file_size(dir / "courbe-2.svg"), 100u);
+  EXPECT_GT(fs::file_size(dir / "out" / "courbe.svg"), 100u);
+  EXPECT_GT(fs::file_size(dir / "out" / "courbe-2.svg"), 100u);
 }

@@ -154,7 +154,7 @@ show('bas3', MAIL:getNodes('BAS'))
 
 TEST_F(MeshCommands, ModiMaillageWithWrittenFileReadBack) {
   // The orientation survives writing (RESULTAT text = ASTER format) and re-reading.
-  StudyRun r = run("DEFI_FICHIER{ACTION='ASSOCIER', UNITE=30, FICHIER='" + path("orie.mail") + R"('}
+  StudyRun r = run("DEFI_FICHIER{ACTION='ASSOCIER', UNITE=30, FICHIER='" + path("etude/orie.mail") + R"('}
 MAIL = LIRE_MAILLAGE{FORMAT='ASTER'}
 MODI_MAILLAGE{reuse=MAIL, MAILLAGE=MAIL, ORIE_PEAU={GROUP_MA_PEAU={'BAS', 'DROITE'}}}
 IMPR_RESU{FORMAT='RESULTAT', UNITE=30, RESU={MAILLAGE=MAIL}}
@@ -300,7 +300,7 @@ MACR_ADAP_MAIL{ADAPTATION='DERAFFINEMENT_UNIFORME', MAILLAGE_N=MAIL, MAILLAGE_NP
 }
 
 TEST_F(MeshCommands, ImprResuMedReadBack) {
-  StudyRun r = run("DEFI_FICHIER{ACTION='ASSOCIER', UNITE=80, FICHIER='" + path("fine.med") + R"('}
+  StudyRun r = run("DEFI_FICHIER{ACTION='ASSOCIER', UNITE=80, FICHIER='" + path("etude/fine.med") + R"('}
 MAIL = LIRE_MAILLAGE{FORMAT='ASTER'}
 MA1 = MAIL
 for i = 1, 4 do
@@ -323,7 +323,7 @@ IMPR_RESU{FORMAT='MED', UNITE=81, RESU={MAILLAGE=MAIL}}
   EXPECT_EQ(r.shown["surface"], "256");
   for (const char* g : {"GAUCHE", "HAUT", "DROITE", "BAS", "MAITRE", "SURFACE"})
     EXPECT_NE((" " + r.shown["grma"] + " ").find(std::string(" ") + g + " "), std::string::npos) << r.shown["grma"];
-  EXPECT_TRUE(fs::exists(dir_ / "fine.med"));
+  EXPECT_TRUE(fs::exists(dir_ / "etude" / "fine.med"));
   EXPECT_TRUE(fs::exists(dir_ / "etude" / "etude.med"));
   // Nothing half-written left behind.
   for (const auto& e : fs::directory_iterator(dir_))
@@ -331,7 +331,7 @@ IMPR_RESU{FORMAT='MED', UNITE=81, RESU={MAILLAGE=MAIL}}
 }
 
 TEST_F(MeshCommands, ImprResuGmshAndVtkOfAMesh) {
-  StudyRun r = run("DEFI_FICHIER{ACTION='ASSOCIER', UNITE=37, FICHIER='" + path("mail.msh") + R"('}
+  StudyRun r = run("DEFI_FICHIER{ACTION='ASSOCIER', UNITE=37, FICHIER='" + path("etude/mail.msh") + R"('}
 MAIL = LIRE_MAILLAGE{FORMAT='ASTER'}
 MA1 = MACR_ADAP_MAIL{ADAPTATION='RAFFINEMENT_UNIFORME', MAILLAGE_N=MAIL, MAILLAGE_NP1=CO('MA1')}
 IMPR_RESU{FORMAT='GMSH', UNITE=37, RESU={MAILLAGE=MA1}}
@@ -352,7 +352,7 @@ IMPR_RESU{FORMAT='VTK', RESU={MAILLAGE=MA1}}
 TEST_F(MeshCommands, ImprResuOfAResultInEveryFormat) {
   // The unit square, E = 1, NU = 0, fixed in X on GAUCHE and in Y on BAS, pulled
   // by FX = 1 per unit length on DROITE: DX = x, DY = 0, SIXX = 1 exactly.
-  StudyRun r = run("DEFI_FICHIER{ACTION='ASSOCIER', UNITE=8, FICHIER='" + path("depl.txt") + R"('}
+  StudyRun r = run("DEFI_FICHIER{ACTION='ASSOCIER', UNITE=8, FICHIER='" + path("etude/depl.txt") + R"('}
 MAIL = LIRE_MAILLAGE{FORMAT='ASTER'}
 MODE = AFFE_MODELE{MAILLAGE=MAIL, AFFE={GROUP_MA='SURFACE', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'}}
 MAT = DEFI_MATERIAU{ELAS={E=1.0, NU=0.0}}
@@ -368,7 +368,7 @@ IMPR_RESU{FORMAT='GMSH', RESU={RESULTAT=RESU, NOM_CHAM='DEPL'}}
 IMPR_RESU{FORMAT='VTK', RESU={RESULTAT=RESU, NOM_CHAM='DEPL', TOUT_ORDRE='OUI'}}
 )");
   EXPECT_STUDY_OK(r);
-  std::ifstream in(dir_ / "depl.txt");
+  std::ifstream in(dir_ / "etude" / "depl.txt");
   std::map<std::string, std::vector<double>> dx;  // node or cell -> values of its rows
   bool depl = false;
   for (std::string line; std::getline(in, line);) {

@@ -224,19 +224,19 @@ DETRUIRE{NOM={L}}
 TEST(PostCommands, ImprFonctionTableauAndPngWithSlope) {
   // y = 3 x^-2: the least-squares slope of log y against log x is -2.
   const auto r = run("plot", R"(
-DEFI_FICHIER{ACTION='ASSOCIER', UNITE=30, FICHIER='courbes.txt'}
+DEFI_FICHIER{ACTION='ASSOCIER', UNITE=30, FICHIER='out/courbes.txt'}
 IMPR_FONCTION{FORMAT='TABLEAU', UNITE=30, COURBE={ABSCISSE={1, 2, 4}, ORDONNEE={3, 0.75, 0.1875}, LEGENDE='h'}}
-DEFI_FICHIER{ACTION='ASSOCIER', UNITE=29, FICHIER='convergence.png'}
+DEFI_FICHIER{ACTION='ASSOCIER', UNITE=29, FICHIER='out/convergence.png'}
 IMPR_FONCTION{FORMAT='PNG', UNITE=29, PENTE='OUI', ECHELLE_X='LOG', ECHELLE_Y='LOG', TITRE='Convergence: slope -2',
   LEGENDE_X='h', LEGENDE_Y='error',
   COURBE={{ABSCISSE={1, 2, 4, 8}, ORDONNEE={3, 0.75, 0.1875, 0.046875}, LEGENDE='erreur L2'},
           {ABSCISSE={1, 2, 4, 8}, ORDONNEE={1, 0.5, 0.25, 0.125}, LEGENDE='ordre 1'}}}
 )");
   EXPECT_EQ(r.status, 0) << r.err << r.out;
-  EXPECT_EQ(readFile(r.dir / "courbes.txt"), "# COURBE 1: h\n# X  Y\n1  3\n2  0.75\n4  0.1875\n\n");
+  EXPECT_EQ(readFile(r.dir / "out" / "courbes.txt"), "# COURBE 1: h\n# X  Y\n1  3\n2  0.75\n4  0.1875\n\n");
   EXPECT_NE(r.out.find("erreur L2 (pente -2.000)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ordre 1 (pente -1.000)"), std::string::npos) << r.out;
-  EXPECT_GT(fs::file_size(r.dir / "convergence.png"), 1000u);
+  EXPECT_GT(fs::file_size(r.dir / "out" / "convergence.png"), 1000u);
 }
 
 TEST(PostCommands, ClearErrors) {

@@ -393,6 +393,7 @@ TEST(Interpreter, CtrlCStopsLuaCode) {
     EXPECT_EQ(r.status, kInterruptedStatus) << code << r.err;
     EXPECT_NE(r.err.find("interrupted (SIGINT)"), std::string::npos) << code << r.err;
   }
+}
 
 // The name a result is assigned to is read from the calling line; a 100 000-character
 // name overflowed the stack of the std::regex that read it.
