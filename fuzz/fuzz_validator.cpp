@@ -73,6 +73,9 @@ Value randomValue(FuzzedDataProvider& p, const KeywordSpec* spec) {
   }
 }
 
+// Deeper than any catalogue (3 levels) and than the interpreter lets a study give (20).
+constexpr int kMaxDepth = 24;
+
 Keywords randomLevel(FuzzedDataProvider& p, const std::vector<KeywordSpec>& specs, const std::string& path,
                      int depth) {
   Keywords level;
@@ -91,7 +94,7 @@ Keywords randomLevel(FuzzedDataProvider& p, const std::vector<KeywordSpec>& spec
     }
     const bool asFactor = spec ? (spec->kind == KeywordSpec::Kind::Factor) != (p.ConsumeIntegralInRange(0, 15) == 0)
                                : p.ConsumeBool();
-    if (asFactor && depth < 4) {
+    if (asFactor && depth < kMaxDepth) {
       std::vector<Keywords> occurrences;
       const int n = p.ConsumeIntegralInRange(0, 3);
       static const std::vector<KeywordSpec> none;
