@@ -229,7 +229,7 @@ Value toValue(lua_State* L, int idx) {
         checkNotDestroyed(*box->ptr);
         return Value::ofConcept(box->ptr);
       }
-      if (auto* co = static_cast<NewNameBox*>(luaL_testudata(L, idx, kNewNameMeta))) return Value::ofNewName(co->name);
+      if (auto* co = liveBox<NewNameBox>(L, idx, kNewNameMeta)) return Value::ofNewName(co->name);
       return Value::other("an unknown userdata");
     case LUA_TTABLE: return Value::other("a table");
     default: return Value::other(std::string("a ") + luaL_typename(L, idx));
