@@ -6,9 +6,13 @@
 // truncations) and reads each version.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <new>
 #include <string>
 
 #include "core/error.hpp"
@@ -90,4 +94,29 @@ TEST(MedCorruption, DamagedFilesAreReadOrRefusedWithTheirName) {
   EXPECT_GT(zeroed.refused, 0);
   EXPECT_GT(inverted.refused, 0);
   EXPECT_EQ(truncated.read, 0);
+}
+
+// The child process itself: what it returns, throws, or how it dies.
+TEST(MedCorruption, TheReadingProcessReportsHowItEnded) {
+  const std::string path = "damaged.med";
+  const std::string big(20'000'000, 'x');  // more than a pipe holds at once
+  EXPECT_EQ(detail::readInChild(path, [&] { return big; }), big);
+  auto errorOf = [&](const std::function<std::string()>& read) {
+    try {
+      detail::readInChild(path, read);
+    } catch (const aster::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string expected = "expected a MED file written by Salome, code_aster or aster-lite";
+  EXPECT_EQ(errorOf([&]() -> std::string { throw aster::Error(path + ": no mesh"); }), path + ": no mesh");
+  EXPECT_EQ(errorOf([]() -> std::string { std::abort(); }),
+            path + ": the MED library (HDF5) crashed reading the file (signal SIGABRT): a damaged MED file (" + expected +
+                ")");
+  EXPECT_EQ(errorOf([]() -> std::string { ::_exit(3); }),
+            path + ": the process reading the MED file ended without a result (exit status 3): a damaged MED file? (" +
+                expected + ")");
+  EXPECT_EQ(errorOf([]() -> std::string { throw std::bad_alloc(); }),
+            path + ": the MED file announces more data than memory can hold (a damaged file; " + expected + ")");
 }

@@ -259,9 +259,9 @@ namespace {
 
 // ---- Reading ----
 //
-// HDF5 and the MED library trust the metadata of the file they read: HDF5 1.10
-// has known crashes (SIGSEGV, heap overflows) on crafted object headers and
-// B-trees, and both print their error stacks to stderr. A MED file is therefore
+// HDF5 and the MED library trust the metadata of the file they read: crashes of
+// HDF5 1.10 on crafted object headers and B-trees are on record (CVEs), and both
+// print their error stacks to stderr. A MED file is therefore
 // read in a child process (fork) that sends what it read back through a pipe;
 // the parent turns a child that dies into an error naming the file. The child
 // only reads the file and leaves with _exit: no OpenMP region, no destructor of
@@ -427,9 +427,9 @@ void passOnSanitizerReport(std::FILE* log) {
     std::fprintf(stderr, "%s", text.c_str());
 }
 
-// Runs `read` in a child process; returns what it returned, or throws the
-// aster::Error it threw, or one saying how the child died.
-std::string readInChild(const std::string& path, const std::function<std::string()>& read) {
+}  // namespace
+
+std::string detail::readInChild(const std::string& path, const std::function<std::string()>& read) {
   medLibrary();  // loaded once, in the parent: its errors are the parent's
   int fds[2];
   if (::pipe(fds) != 0)
@@ -494,6 +494,8 @@ std::string readInChild(const std::string& path, const std::function<std::string
   if (data[0] == 'E') throw Error(data.substr(1));
   return data.substr(1);
 }
+
+namespace {
 
 // Reads the mesh (in the child): every count and index from the file checked.
 Mesh readMesh(const std::string& path, const std::string& wanted, std::uintmax_t fileSize) {
@@ -745,13 +747,13 @@ Mesh readMeshOf(const std::string& path, const std::string& wanted) {
 
 Mesh readMedMesh(const std::string& path, const std::string& wanted) {
   checkHdf5Signature(path);  // the common mistakes, without a child process
-  return unpackMesh(readInChild(path, [&] { return packMesh(readMeshOf(path, wanted)); }));
+  return unpackMesh(detail::readInChild(path, [&] { return packMesh(readMeshOf(path, wanted)); }));
 }
 
 NodalField readMedNodalField(const std::string& path, const std::string& fieldName, int numdt) {
   checkHdf5Signature(path);
   const std::uintmax_t fileSize = sizeOf(path);
-  const std::string data = readInChild(path, [&] {
+  const std::string data = detail::readInChild(path, [&] {
     const NodalField f = readField(path, fieldName, numdt, fileSize);
     Packer p;
     p.put(f.components.size());

@@ -2,6 +2,7 @@
 // (cell families -> GROUP_MA, node families -> GROUP_NO) and nodal result fields.
 // Connectivities are converted with code_aster's MED <-> code_aster node tables.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,5 +35,12 @@ void writeMedResults(const Mesh& mesh, const std::string& path, const std::vecto
 // One nodal field at one time step (numdt) as written above: components and values
 // (read in a child process as readMedMesh).
 NodalField readMedNodalField(const std::string& path, const std::string& fieldName, int numdt);
+
+namespace detail {
+// The readers' child process: runs `read` in it and returns what it returned, or
+// throws the aster::Error it threw, or an error naming `path` when it died
+// (signal, or an exit without a result). Declared here for its tests.
+std::string readInChild(const std::string& path, const std::function<std::string()>& read);
+}  // namespace detail
 
 }  // namespace aster::mesh
