@@ -2,15 +2,27 @@
 
 #include <med.h>
 
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <array>
 #include <cerrno>
+#include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <map>
 #include <set>
+#include <type_traits>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "mesh/io/med_library.hpp"
 #include "mesh/node_ordering.hpp"
 
@@ -275,12 +287,256 @@ void addMedResults(const Mesh& mesh, const std::string& path, const std::vector<
   writeMedFile(mesh, path, instants, meshName, true, meshPresent);
 }
 
-Mesh readMedMesh(const std::string& path, const std::string& wanted) {
+namespace {
+
+// ---- Reading ----
+//
+// HDF5 and the MED library trust the metadata of the file they read: crashes of
+// HDF5 1.10 on crafted object headers and B-trees are on record (CVEs), and both
+// print their error stacks to stderr. A MED file is therefore
+// read in a child process (fork) that sends what it read back through a pipe;
+// the parent turns a child that dies into an error naming the file. The child
+// only reads the file and leaves with _exit: no OpenMP region, no destructor of
+// the parent's objects and no atexit handler runs in it. Its stdout goes to
+// /dev/null, its stderr to a temporary file that is dropped, unless it holds a
+// sanitizer report (sanitizer builds), which is passed on.
+// The counts and indices the library returns are checked all the same before
+// they size a buffer or index an array.
+
+// A count of items of `bytesEach` bytes that the file must hold: MED writes its
+// arrays uncompressed, so a count larger than the file is damaged metadata.
+void checkCount(const std::string& path, std::uintmax_t fileSize, med_int n, std::uintmax_t bytesEach,
+                const std::string& what) {
+  if (n < 0 || static_cast<std::uintmax_t>(n) > fileSize / bytesEach ||
+      static_cast<long long>(n) > std::numeric_limits<int>::max())
+    throw Error(path + ": the MED file announces " + std::to_string(n) + " " + what + ", more than its " +
+                std::to_string(fileSize) + " bytes can hold (a damaged file; " + kMedExpected + ")");
+}
+
+// What the child sends to the parent, written and read in the same order (host
+// byte order: both ends are this program).
+class Packer {
+ public:
+  template <class T>
+  void put(const T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    data_.append(reinterpret_cast<const char*>(&value), sizeof value);
+  }
+  void put(const std::string& s) {
+    put(static_cast<std::uint64_t>(s.size()));
+    data_ += s;
+  }
+  template <class T>
+  void put(const std::vector<T>& v) {
+    put(static_cast<std::uint64_t>(v.size()));
+    data_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+  std::string take() { return std::move(data_); }
+
+ private:
+  std::string data_;
+};
+
+class Unpacker {
+ public:
+  explicit Unpacker(const std::string& data) : data_(data) {}
+  template <class T>
+  T get() {
+    T value{};
+    need(sizeof value);
+    std::memcpy(&value, data_.data() + pos_, sizeof value);
+    pos_ += sizeof value;
+    return value;
+  }
+  std::string getString() {
+    const std::size_t n = size(1);
+    std::string s = data_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  template <class T>
+  std::vector<T> getVector() {
+    const std::size_t n = size(sizeof(T));
+    std::vector<T> v(n);
+    if (n) std::memcpy(v.data(), data_.data() + pos_, n * sizeof(T));
+    pos_ += n * sizeof(T);
+    return v;
+  }
+
+ private:
+  void need(std::size_t n) const {
+    if (data_.size() - pos_ < n) throw Error("MED reader: the data sent by the reading process is incomplete");
+  }
+  std::size_t size(std::size_t bytesEach) {
+    const auto n = get<std::uint64_t>();
+    if (n > (data_.size() - pos_) / bytesEach)
+      throw Error("MED reader: the data sent by the reading process is incomplete");
+    return static_cast<std::size_t>(n);
+  }
+  const std::string& data_;
+  std::size_t pos_ = 0;
+};
+
+std::string packMesh(const Mesh& mesh) {
+  Packer p;
+  p.put(mesh.title);
+  p.put(static_cast<std::int32_t>(mesh.spaceDimension()));
+  p.put(static_cast<std::uint64_t>(mesh.nodeCount()));
+  for (int i = 0; i < mesh.nodeCount(); ++i) {
+    const Eigen::Vector3d x = mesh.node(i);
+    p.put(std::array<double, 3>{x[0], x[1], x[2]});
+    p.put(mesh.nodeName(i));
+  }
+  p.put(static_cast<std::uint64_t>(mesh.cellCount()));
+  for (int c = 0; c < mesh.cellCount(); ++c) {
+    const auto n = mesh.cellNodes(c);
+    p.put(static_cast<std::int32_t>(mesh.cellType(c)));
+    p.put(std::vector<int>(n.begin(), n.end()));
+    p.put(mesh.cellName(c));
+  }
+  const auto cellGroups = mesh.cellGroupNames(), nodeGroups = mesh.nodeGroupNames();
+  p.put(static_cast<std::uint64_t>(cellGroups.size()));
+  for (const auto& g : cellGroups) {
+    p.put(g);
+    p.put(mesh.cellGroup(g));
+  }
+  p.put(static_cast<std::uint64_t>(nodeGroups.size()));
+  for (const auto& g : nodeGroups) {
+    p.put(g);
+    p.put(mesh.nodeGroup(g));
+  }
+  return p.take();
+}
+
+Mesh unpackMesh(const std::string& data) {
+  Unpacker u(data);
+  Mesh mesh;
+  mesh.title = u.getString();
+  mesh.setSpaceDimension(u.get<std::int32_t>());
+  const auto nodes = u.get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < nodes; ++i) {
+    const auto x = u.get<std::array<double, 3>>();
+    mesh.addNode({x[0], x[1], x[2]}, u.getString());
+  }
+  const auto cells = u.get<std::uint64_t>();
+  for (std::uint64_t c = 0; c < cells; ++c) {
+    const auto t = u.get<std::int32_t>();
+    if (t < 0 || t >= kCellTypeCount) throw Error("MED reader: the data sent by the reading process is damaged");
+    const auto type = static_cast<CellType>(t);
+    const auto n = u.getVector<int>();
+    mesh.addCell(type, n, u.getString());
+  }
+  for (const bool cellGroups : {true, false}) {
+    const auto groups = u.get<std::uint64_t>();
+    for (std::uint64_t g = 0; g < groups; ++g) {
+      const std::string name = u.getString();
+      auto members = u.getVector<int>();
+      cellGroups ? mesh.addCellGroup(name, std::move(members)) : mesh.addNodeGroup(name, std::move(members));
+    }
+  }
+  return mesh;
+}
+
+void writeAll(int fd, const std::string& data) {
+  std::size_t done = 0;
+  while (done < data.size()) {
+    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;  // the parent is gone or failed: it reports the missing data
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+// What the child printed to stderr, passed on when it is a sanitizer report.
+void passOnSanitizerReport(std::FILE* log) {
+  if (!log) return;
+  std::string text;
+  char buffer[4096];
+  std::rewind(log);
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, log)) > 0;) text.append(buffer, n);
+  std::fclose(log);
+  if (text.find("Sanitizer") != std::string::npos || text.find("runtime error:") != std::string::npos)
+    std::fprintf(stderr, "%s", text.c_str());
+}
+
+}  // namespace
+
+std::string detail::readInChild(const std::string& path, const std::function<std::string()>& read) {
+  medLibrary();  // loaded once, in the parent: its errors are the parent's
+  int fds[2];
+  if (::pipe(fds) != 0)
+    throw Error("cannot read the MED file '" + path + "': no pipe to a reading process (" + std::strerror(errno) + ")");
+  std::FILE* log = std::tmpfile();
+  std::fflush(nullptr);  // nothing buffered is written twice
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    const int e = errno;
+    ::close(fds[0]);
+    ::close(fds[1]);
+    if (log) std::fclose(log);
+    throw Error("cannot read the MED file '" + path + "': no reading process (fork: " + std::strerror(e) + ")");
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) ::dup2(null, STDOUT_FILENO);
+    if (log)
+      ::dup2(::fileno(log), STDERR_FILENO);
+    else if (null >= 0)
+      ::dup2(null, STDERR_FILENO);
+    std::string out;
+    try {
+      out = "D" + read();
+    } catch (const std::bad_alloc&) {
+      out = "E" + path + ": the MED file announces more data than memory can hold (a damaged file; " + kMedExpected + ")";
+    } catch (const std::exception& e) {
+      out = std::string("E") + e.what();
+    } catch (...) {
+      out = "E" + path + ": unknown error while reading the MED file";
+    }
+    writeAll(fds[1], out);
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  std::string data;
+  char buffer[65536];
+  for (;;) {
+    const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    data.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  passOnSanitizerReport(log);
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    if (sig == SIGINT) throw Interrupted("interrupted (SIGINT) while reading the MED file " + path);
+    const char* name = sigabbrev_np(sig);
+    throw Error(path + ": the MED library (HDF5) crashed reading the file (signal " +
+                (name ? "SIG" + std::string(name) : std::to_string(sig)) + "): a damaged MED file (" + kMedExpected +
+                ")");
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || data.empty())
+    throw Error(path + ": the process reading the MED file ended without a result (exit status " +
+                std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + "): a damaged MED file? (" +
+                kMedExpected + ")");
+  if (data[0] == 'E') throw Error(data.substr(1));
+  return data.substr(1);
+}
+
+namespace {
+
+// Reads the mesh (in the child): every count and index from the file checked.
+Mesh readMesh(const std::string& path, const std::string& wanted, std::uintmax_t fileSize) {
   MedFile file(path, MED_ACC_RDONLY);
   const med_idt fid = file.id();
   const med_int meshes = medLibrary().nMesh(fid);
   if (meshes < 0) file.check(-1, "counting the meshes");
   if (meshes == 0) throw Error(path + ": the MED file holds no mesh (expected at least one unstructured mesh)");
+  checkCount(path, fileSize, meshes, 64, "meshes");
   char name[MED_NAME_SIZE + 1] = {}, desc[MED_COMMENT_SIZE + 1] = {}, dtunit[MED_SNAME_SIZE + 1] = {};
   med_int sdim = 0, mdim = 0, nstep = 0;
   med_mesh_type mtype;
@@ -291,10 +547,17 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
   for (med_int m = 1; m <= meshes; ++m) {
     sdim = medLibrary().meshnAxis(fid, m);
     if (sdim < 0) file.check(-1, "reading the mesh list");
-    std::vector<char> axisName(sdim * MED_SNAME_SIZE + 1), axisUnit(sdim * MED_SNAME_SIZE + 1);
+    if (sdim < 1 || sdim > 3)
+      throw Error(path + ": mesh " + std::to_string(m) + " of the MED file has space dimension " +
+                  std::to_string(sdim) + " (expected 1, 2 or 3: a damaged file?)");
+    // Room for 3 axes whatever the count: the names are read again below.
+    std::vector<char> axisName(3 * MED_SNAME_SIZE + 1), axisUnit(3 * MED_SNAME_SIZE + 1);
     file.check(medLibrary().meshInfo(fid, m, name, &sdim, &mdim, &mtype, desc, dtunit, &sort, &nstep, &axis, axisName.data(),
                            axisUnit.data()),
                "reading the mesh list");
+    if (sdim < 1 || sdim > 3)
+      throw Error(path + ": mesh " + std::to_string(m) + " of the MED file has space dimension " +
+                  std::to_string(sdim) + " (expected 1, 2 or 3: a damaged file?)");
     const std::string n = fixed(name, MED_NAME_SIZE);
     available.push_back(n);
     if (wanted.empty() || n == wanted) {
@@ -321,55 +584,92 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
   const med_int nn = medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE, MED_COORDINATE, MED_NO_CMODE,
                                     &changed, &transformed);
   if (nn < 0) file.check(-1, "counting the nodes" + of);
+  checkCount(path, fileSize, nn, sdim * sizeof(med_float), "nodes" + of);
   std::vector<med_float> xyz(static_cast<std::size_t>(nn) * sdim);
   if (nn > 0)
     file.check(medLibrary().meshNodeCoordinateRd(fid, mn, MED_NO_DT, MED_NO_IT, MED_FULL_INTERLACE, xyz.data()),
                "reading the coordinates" + of);
 
-  auto readNames = [&](med_entity_type et, med_geometry_type gt, med_int count) {
+  // Names and family numbers: as many as the entities, or none.
+  auto announced = [&](med_entity_type et, med_geometry_type gt, med_data_type data, med_int count,
+                       const std::string& what) {
+    const med_int has = medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, data, MED_NO_CMODE, &changed, &transformed);
+    if (has > 0 && has != count)
+      throw Error(path + ": the MED file has " + std::to_string(has) + " " + what + " for " + std::to_string(count) +
+                  (count == 1 ? " entity" : " entities") + of + " (expected one each: a damaged file?)");
+    return has > 0;
+  };
+  auto readNames = [&](med_entity_type et, med_geometry_type gt, med_int count, const std::string& what) {
     std::vector<std::string> names;
-    const med_int has = medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, MED_NAME, MED_NO_CMODE, &changed, &transformed);
-    if (has <= 0) return names;
+    if (count == 0 || !announced(et, gt, MED_NAME, count, "names of " + what)) return names;
     std::vector<char> buf(static_cast<std::size_t>(count) * MED_SNAME_SIZE + 1);
     file.check(medLibrary().meshEntityNameRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, buf.data()), "reading the names" + of);
-    for (med_int k = 0; k < count; ++k) names.push_back(fixed(buf.data() + k * MED_SNAME_SIZE, MED_SNAME_SIZE));
+    for (med_int k = 0; k < count; ++k) {
+      names.push_back(fixed(buf.data() + k * MED_SNAME_SIZE, MED_SNAME_SIZE));
+      if (names.back().empty())
+        throw Error(path + ": the MED file gives no name to entity " + std::to_string(k + 1) + " of the " + what + of +
+                    " (expected a name for each: a damaged file?)");
+    }
     return names;
   };
-  auto readFamilies = [&](med_entity_type et, med_geometry_type gt, med_int count) {
+  auto readFamilies = [&](med_entity_type et, med_geometry_type gt, med_int count, const std::string& what) {
     std::vector<med_int> fam(count, 0);
-    const med_int has =
-        medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, MED_FAMILY_NUMBER, MED_NO_CMODE, &changed, &transformed);
-    if (has > 0 && count > 0)
+    if (count > 0 && announced(et, gt, MED_FAMILY_NUMBER, count, "family numbers of " + what))
       file.check(medLibrary().meshEntityFamilyNumberRd(fid, mn, MED_NO_DT, MED_NO_IT, et, gt, fam.data()),
                  "reading the families" + of);
     return fam;
   };
 
-  const auto nodeNames = readNames(MED_NODE, MED_NONE, nn);
+  const auto nodeNames = readNames(MED_NODE, MED_NONE, nn, "nodes");
   for (med_int i = 0; i < nn; ++i) {
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
     for (int d = 0; d < sdim; ++d) x[d] = xyz[static_cast<std::size_t>(i) * sdim + d];
-    mesh.addNode(x, nodeNames.empty() ? "N" + std::to_string(i + 1) : nodeNames[i]);
+    const std::string nodeName = nodeNames.empty() ? "N" + std::to_string(i + 1) : nodeNames[i];
+    if (!x.allFinite())
+      throw Error(path + ": node " + nodeName + of + " has a coordinate that is not a finite number (" +
+                  std::to_string(x[0]) + ", " + std::to_string(x[1]) + ", " + std::to_string(x[2]) + ")");
+    mesh.addNode(x, nodeName);
   }
-  const auto nodeFamily = readFamilies(MED_NODE, MED_NONE, nn);
+  const auto nodeFamily = readFamilies(MED_NODE, MED_NONE, nn, "nodes");
 
-  // Cells in MED type order.
-  std::vector<std::pair<int, CellType>> order;
-  for (int t = 0; t < kCellTypeCount; ++t) order.emplace_back(medType(static_cast<CellType>(t)), static_cast<CellType>(t));
+  // Cells in MED type order, of every type the file has: a type aster-lite does
+  // not read, or one announced without cells (damaged metadata), is an error
+  // rather than cells silently left out.
+  std::vector<std::pair<med_geometry_type, CellType>> order;
+  const med_int types = medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, MED_CELL, MED_GEO_ALL, MED_CONNECTIVITY,
+                                                 MED_NODAL, &changed, &transformed);
+  if (types < 0) file.check(-1, "counting the cell types" + of);
+  checkCount(path, fileSize, types, MED_NAME_SIZE, "cell types" + of);
+  for (med_int it = 1; it <= types; ++it) {
+    char typeName[MED_NAME_SIZE + 1] = {};
+    med_geometry_type mt = MED_NONE;
+    file.check(medLibrary().meshEntityInfo(fid, mn, MED_NO_DT, MED_NO_IT, MED_CELL, static_cast<int>(it), typeName, &mt),
+               "reading the cell types" + of);
+    int t = 0;
+    while (t < kCellTypeCount && medType(static_cast<CellType>(t)) != mt) ++t;
+    if (t == kCellTypeCount)
+      throw Error(path + ": mesh '" + meshName + "' has cells of the MED type '" + fixed(typeName, MED_NAME_SIZE) + "' (" +
+                  std::to_string(mt) + "), which aster-lite does not read (expected the code_aster types POI1 to HEXA27)");
+    order.emplace_back(mt, static_cast<CellType>(t));
+  }
   std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<med_int> cellFamily;
   std::vector<int> nodes;
   for (const auto& [mt, type] : order) {
     const med_int count = medLibrary().meshnEntity(fid, mn, MED_NO_DT, MED_NO_IT, MED_CELL, mt, MED_CONNECTIVITY, MED_NODAL,
                                          &changed, &transformed);
-    if (count <= 0) continue;
     const int nnc = nodeCount(type);
+    const std::string cellsOf = cellTypeName(type) + " cells";
+    if (count <= 0)
+      throw Error(path + ": the MED file announces " + std::to_string(count) + " " + cellsOf + of +
+                  " (expected at least one for a type it lists: a damaged file)");
+    checkCount(path, fileSize, count, nnc * sizeof(med_int), cellsOf + of);
     std::vector<med_int> conn(static_cast<std::size_t>(count) * nnc);
     file.check(medLibrary().meshElementConnectivityRd(fid, mn, MED_NO_DT, MED_NO_IT, MED_CELL, mt, MED_NODAL, MED_FULL_INTERLACE,
                                             conn.data()),
-               "reading the " + cellTypeName(type) + " cells" + of);
-    const auto names = readNames(MED_CELL, mt, count);
-    const auto fam = readFamilies(MED_CELL, mt, count);
+               "reading the " + cellsOf + of);
+    const auto names = readNames(MED_CELL, mt, count, cellsOf);
+    const auto fam = readFamilies(MED_CELL, mt, count, cellsOf);
     const auto& perm = asterFromForeign(NodeConvention::Med, type);
     for (med_int e = 0; e < count; ++e) {
       nodes.assign(nnc, 0);
@@ -384,41 +684,57 @@ Mesh readMedMesh(const std::string& path, const std::string& wanted) {
       cellFamily.push_back(fam[e]);
     }
   }
+  if (mesh.cellCount() == 0)
+    throw Error(path + ": mesh '" + meshName + "' of the MED file has no cell (expected cells of the code_aster types)");
   // Families -> groups, in order of family definition.
   const med_int nfam = medLibrary().nFamily(fid, mn);
-  std::map<med_int, std::vector<std::string>> groupsOfFamily;
+  if (nfam < 0) file.check(-1, "counting the families" + of);
+  checkCount(path, fileSize, nfam, MED_NAME_SIZE, "families" + of);
+  std::map<med_int, std::vector<std::string>> groupsOfFamily{{0, {}}};  // family 0: no group
   std::vector<std::string> nodeGroupOrder, cellGroupOrder;
   for (med_int f = 1; f <= nfam; ++f) {
     const med_int ng = medLibrary().nFamilyGroup(fid, mn, f);
     if (ng < 0) file.check(-1, "reading the families" + of);
+    checkCount(path, fileSize, ng, MED_LNAME_SIZE, "groups in family " + std::to_string(f) + of);
     char famName[MED_NAME_SIZE + 1] = {};
     med_int number = 0;
     std::vector<char> groups(static_cast<std::size_t>(ng) * MED_LNAME_SIZE + 1);
     file.check(medLibrary().familyInfo(fid, mn, f, famName, &number, groups.data()), "reading the families" + of);
     auto& order = number > 0 ? nodeGroupOrder : cellGroupOrder;
+    groupsOfFamily[number];  // defined, maybe without groups
     for (med_int g = 0; g < ng; ++g) {
       const std::string gname = fixed(groups.data() + g * MED_LNAME_SIZE, MED_LNAME_SIZE);
+      if (gname.empty())
+        throw Error(path + ": family '" + fixed(famName, MED_NAME_SIZE) + "'" + of +
+                    " has a group without a name (a damaged file?)");
       groupsOfFamily[number].push_back(gname);
       if (std::find(order.begin(), order.end(), gname) == order.end()) order.push_back(gname);
     }
   }
+  // A family number without its family is damage: the groups of the entity are lost.
+  auto groupsOf = [&](med_int family, const std::string& entity) -> const std::vector<std::string>& {
+    const auto it = groupsOfFamily.find(family);
+    if (it == groupsOfFamily.end())
+      throw Error(path + ": " + entity + of + " is in family " + std::to_string(family) +
+                  ", which the MED file does not define (a damaged file?)");
+    return it->second;
+  };
   std::map<std::string, std::vector<int>> nodeGroups, cellGroups;
   for (int i = 0; i < mesh.nodeCount(); ++i)
-    if (nodeFamily[i] != 0)
-      for (const auto& g : groupsOfFamily[nodeFamily[i]]) nodeGroups[g].push_back(i);
+    for (const auto& g : groupsOf(nodeFamily[i], "node " + mesh.nodeName(i))) nodeGroups[g].push_back(i);
   for (int c = 0; c < mesh.cellCount(); ++c)
-    if (cellFamily[c] != 0)
-      for (const auto& g : groupsOfFamily[cellFamily[c]]) cellGroups[g].push_back(c);
+    for (const auto& g : groupsOf(cellFamily[c], "cell " + mesh.cellName(c))) cellGroups[g].push_back(c);
   for (const auto& g : cellGroupOrder) mesh.addCellGroup(g, cellGroups[g]);
   for (const auto& g : nodeGroupOrder) mesh.addNodeGroup(g, nodeGroups[g]);
   return mesh;
 }
 
-NodalField readMedNodalField(const std::string& path, const std::string& fieldName, int numdt) {
+NodalField readField(const std::string& path, const std::string& fieldName, int numdt, std::uintmax_t fileSize) {
   MedFile file(path, MED_ACC_RDONLY);
   const med_idt fid = file.id();
   const med_int nc = medLibrary().fieldnComponentByName(fid, fieldName.c_str());
   if (nc <= 0) throw Error(path + ": no field '" + fieldName + "' in the MED file");
+  checkCount(path, fileSize, nc, MED_SNAME_SIZE, "components of field '" + fieldName + "'");
   char meshName[MED_NAME_SIZE + 1] = {}, dtunit[MED_SNAME_SIZE + 1] = {};
   med_bool local;
   med_field_type type;
@@ -431,10 +747,58 @@ NodalField readMedNodalField(const std::string& path, const std::string& fieldNa
   for (med_int k = 0; k < nc; ++k) f.components.push_back(fixed(comp.data() + k * MED_SNAME_SIZE, MED_SNAME_SIZE));
   const med_int count = medLibrary().fieldnValue(fid, fieldName.c_str(), numdt, MED_NO_IT, MED_NODE, MED_NONE);
   if (count <= 0) throw Error(path + ": field '" + fieldName + "' has no nodal values at step " + std::to_string(numdt));
+  checkCount(path, fileSize / nc, count, sizeof(double), "values of field '" + fieldName + "'");
   f.values.resize(static_cast<std::size_t>(count) * nc);
   file.check(medLibrary().fieldValueRd(fid, fieldName.c_str(), numdt, MED_NO_IT, MED_NODE, MED_NONE, MED_FULL_INTERLACE,
                              MED_ALL_CONSTITUENT, reinterpret_cast<unsigned char*>(f.values.data())),
              "reading field " + fieldName);
+  return f;
+}
+
+// The size of a file that checkHdf5Signature could open.
+std::uintmax_t sizeOf(const std::string& path) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error("cannot open the MED file '" + path + "' (" + ec.message() + ")");
+  return size;
+}
+
+// readMesh, with the file named in the messages of the mesh's own checks (duplicate names...).
+Mesh readMeshOf(const std::string& path, const std::string& wanted) {
+  checkHdf5Signature(path);
+  const std::uintmax_t fileSize = sizeOf(path);
+  try {
+    return readMesh(path, wanted, fileSize);
+  } catch (const Error& e) {
+    if (std::string(e.what()).find(path) != std::string::npos) throw;
+    throw Error(path + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+Mesh readMedMesh(const std::string& path, const std::string& wanted) {
+  checkHdf5Signature(path);  // the common mistakes, without a child process
+  return unpackMesh(detail::readInChild(path, [&] { return packMesh(readMeshOf(path, wanted)); }));
+}
+
+NodalField readMedNodalField(const std::string& path, const std::string& fieldName, int numdt) {
+  checkHdf5Signature(path);
+  const std::uintmax_t fileSize = sizeOf(path);
+  const std::string data = detail::readInChild(path, [&] {
+    const NodalField f = readField(path, fieldName, numdt, fileSize);
+    Packer p;
+    p.put(f.components.size());
+    for (const auto& c : f.components) p.put(c);
+    p.put(f.values);
+    return p.take();
+  });
+  Unpacker u(data);
+  NodalField f;
+  f.name = fieldName;
+  const auto components = u.get<std::size_t>();
+  for (std::size_t k = 0; k < components; ++k) f.components.push_back(u.getString());
+  f.values = u.getVector<double>();
   return f;
 }
 

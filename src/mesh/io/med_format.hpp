@@ -2,6 +2,7 @@
 // (cell families -> GROUP_MA, node families -> GROUP_NO) and nodal result fields.
 // Connectivities are converted with code_aster's MED <-> code_aster node tables.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,12 @@ namespace aster::mesh {
 // (checked before the MED library opens it, also by readMedNodalField), "<path>:
 // the MED file holds no mesh (...)", "<path>: no mesh called 'X' in the MED file
 // (expected one of the meshes present: A, B)", and the mesh of a failing MED call.
+// The MED library reads the file in a child process: a damaged file that crashes
+// HDF5 gives "<path>: the MED library (HDF5) crashed reading the file (signal
+// SIGSEGV): a damaged MED file (...)". Counts the file announces beyond what it
+// can hold or inconsistent with each other, node indices out of range, family
+// numbers without their family, empty names, non-finite coordinates, cell types
+// aster-lite does not read and a mesh without cells are errors.
 Mesh readMedMesh(const std::string& path, const std::string& meshName = "");
 
 // Writes the mesh (and groups, names when they fit in 16 characters) to a new file.
@@ -31,7 +38,15 @@ void writeMedResults(const Mesh& mesh, const std::string& path, const std::vecto
 void addMedResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
                    const std::string& meshName, bool meshPresent);
 
-// One nodal field at one time step (numdt) as written above: components and values.
+// One nodal field at one time step (numdt) as written above: components and values
+// (read in a child process as readMedMesh).
 NodalField readMedNodalField(const std::string& path, const std::string& fieldName, int numdt);
+
+namespace detail {
+// The readers' child process: runs `read` in it and returns what it returned, or
+// throws the aster::Error it threw, or an error naming `path` when it died
+// (signal, or an exit without a result). Declared here for its tests.
+std::string readInChild(const std::string& path, const std::function<std::string()>& read);
+}  // namespace detail
 
 }  // namespace aster::mesh

@@ -33,6 +33,7 @@ MedLibrary load() {
   ASTER_MED_RESOLVE(meshCr);
   ASTER_MED_RESOLVE(meshElementConnectivityRd);
   ASTER_MED_RESOLVE(meshElementConnectivityWr);
+  ASTER_MED_RESOLVE(meshEntityInfo);
   ASTER_MED_RESOLVE(meshEntityFamilyNumberRd);
   ASTER_MED_RESOLVE(meshEntityFamilyNumberWr);
   ASTER_MED_RESOLVE(meshEntityNameRd);

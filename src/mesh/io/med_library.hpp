@@ -23,6 +23,7 @@ struct MedLibrary {
   decltype(&MEDmeshCr) meshCr;
   decltype(&MEDmeshElementConnectivityRd) meshElementConnectivityRd;
   decltype(&MEDmeshElementConnectivityWr) meshElementConnectivityWr;
+  decltype(&MEDmeshEntityInfo) meshEntityInfo;
   decltype(&MEDmeshEntityFamilyNumberRd) meshEntityFamilyNumberRd;
   decltype(&MEDmeshEntityFamilyNumberWr) meshEntityFamilyNumberWr;
   decltype(&MEDmeshEntityNameRd) meshEntityNameRd;

@@ -4,8 +4,11 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
+#include <set>
 #include <unordered_set>
 #include <vector>
 
@@ -93,6 +96,474 @@ std::string plural(std::size_t n, const std::string& word) {
   return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
 
+// What is wrong with a line of $PhysicalNames ("" when nothing): the form
+// '<dimension> <tag> "<name>"' that gmsh reads, within its 255-byte buffer, and a
+// dimension 0 to 3 (gmsh indexes a table with it).
+std::string physicalNameError(const std::string& text) {
+  std::string line = text;
+  while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+  std::size_t i = 0;
+  auto word = [&] {
+    while (i < line.size() && isBlank(line[i])) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && !isBlank(line[i])) ++i;
+    return line.substr(start, i - start);
+  };
+  const std::string dim = word(), tag = word();
+  while (i < line.size() && isBlank(line[i])) ++i;
+  const std::size_t close = line.rfind('"');
+  long long d = 0, t = 0;
+  bool ok = parseInteger(dim, d) && parseInteger(tag, t) && t >= INT32_MIN && t <= INT32_MAX && i < line.size() &&
+            line[i] == '"' && close > i && line.find_first_not_of(" \t", close + 1) == std::string::npos &&
+            line.size() < 255;
+  for (const char c : line) ok = ok && (static_cast<unsigned char>(c) >= 32 || c == '\t');
+  if (!ok)
+    return "found " + shown(line) + " (expected a physical name '<dimension> <tag> \"<name>\"' on a line of at most 254 "
+           "characters)";
+  if (d < 0 || d > 3)
+    return "physical name " + shown(line.substr(i)) + " has dimension " + dim + " (expected 0, 1, 2 or 3)";
+  return "";
+}
+
+// A binary .msh file (file type 1), checked in full before gmsh reads it:
+// gmsh's binary readers trust every count, tag and size they read (a block
+// longer than its section's count overruns their arrays, an unknown element
+// type or a cell in an entity of another dimension is kept half-built), so a
+// damaged file would crash the program or lose cells instead of failing.
+// The file is framed as gmsh frames it: lines are read as fgets reads them, in
+// chunks of at most 1023 bytes (255 for MSH 2.2), and a chunk starting with
+// '$' opens a section. Offsets in messages are byte offsets from 0.
+class BinaryMshChecker {
+ public:
+  // `start`: the offset just after the version line; `trailer`: what follows
+  // "$MeshFormat" on the first line (gmsh expects it after every "$EndName").
+  BinaryMshChecker(std::string path, int version, std::ifstream& in, std::uint64_t start, std::string trailer)
+      : path_(std::move(path)), version_(version), in_(in), pos_(start), trailer_(std::move(trailer)) {
+    in_.clear();
+    in_.seekg(0, std::ios::end);
+    size_ = static_cast<std::uint64_t>(in_.tellg());
+    in_.seekg(static_cast<std::streamoff>(start));
+  }
+
+  void run() {
+    section_ = "MeshFormat";
+    sectionAt_ = 0;
+    seen_.insert(section_);
+    if (version_ != 22 && version_ != 41)
+      fail(pos_, "a binary file of MSH version 4.0 (expected version 4.1 or 2.2 for a binary file; gmsh reads 4.0 "
+                 "in ASCII only)");
+    const std::uint64_t at = pos_;
+    const auto one = read<std::int32_t>("the integer 1 that follows the version line");
+    if (one != 1)
+      fail(at, "found the binary integer " + std::to_string(one) +
+                   " after the version line (expected 1: a file written on a machine of another byte order, or a "
+                   "damaged file)");
+    endSection("the byte-order integer");
+    for (;;) {
+      const std::uint64_t at = pos_;
+      std::string chunk;
+      // gmsh stops at the end of the file, also on a last line without newline.
+      if (!nextChunk(chunk) || chunk.back() != '\n') break;
+      if (chunk[0] == '$') section(chunk, at);  // other text between sections: gmsh skips it
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(std::uint64_t at, const std::string& what) const {
+    throw Error(path_ + ": byte " + std::to_string(at) + " (binary section $" + section_ + " at byte " +
+                std::to_string(sectionAt_) + "): " + what);
+  }
+
+  // One line as gmsh's fgets reads it: up to and with '\n', at most 1023 bytes (255 for MSH 2.2).
+  bool nextChunk(std::string& chunk) {
+    chunk.clear();
+    const std::size_t max = version_ == 41 ? 1023 : 255;
+    char c = 0;
+    while (chunk.size() < max && pos_ < size_ && in_.get(c)) {
+      ++pos_;
+      chunk += c;
+      if (c == '\n') break;
+    }
+    return !chunk.empty();
+  }
+
+  template <class T>
+  T read(const std::string& what) {
+    T value{};
+    if (size_ - pos_ < sizeof value) fail(pos_, "the file ends inside " + what + " (truncated file?)");
+    in_.read(reinterpret_cast<char*>(&value), sizeof value);
+    pos_ += sizeof value;
+    return value;
+  }
+
+  template <class T>
+  std::vector<T> readArray(std::uint64_t n, const std::string& what) {
+    if (n > (size_ - pos_) / sizeof(T)) fail(pos_, "the file ends inside " + what + " (truncated file?)");
+    std::vector<T> values(static_cast<std::size_t>(n));
+    in_.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(n * sizeof(T)));
+    pos_ += n * sizeof(T);
+    return values;
+  }
+
+  // A count of items that take at least `itemBytes` each in what is left of the file.
+  std::uint64_t count(std::uint64_t n, std::uint64_t at, const std::string& what, std::uint64_t itemBytes) const {
+    const std::uint64_t left = size_ - pos_;
+    if (n > left / itemBytes)
+      fail(at, what + " is " + std::to_string(n) + ", more than the " + plural(left, "byte") +
+                   " left in the file can hold (" + std::to_string(itemBytes) +
+                   " bytes or more each): a damaged count or a truncated file");
+    return n;
+  }
+  std::uint64_t readCount(const std::string& what, std::uint64_t itemBytes) {
+    const std::uint64_t at = pos_;
+    return count(read<std::uint64_t>(what), at, what, itemBytes);
+  }
+  // MSH 2.2: the count is a text line after the section marker.
+  std::uint64_t countLine(const std::string& what, std::uint64_t itemBytes) {
+    const std::uint64_t at = pos_;
+    std::string chunk;
+    long long n = 0;
+    const bool got = nextChunk(chunk);
+    const auto w = splitWords(chunk);
+    if (!got || chunk.back() != '\n' || w.size() != 1 || !parseInteger(w[0], n) || n < 0 || n > INT32_MAX)
+      fail(at, "found " + shown(chunk) + " after $" + section_ + " (expected " + what + " on a line of its own)");
+    return count(static_cast<std::uint64_t>(n), at, what, itemBytes);
+  }
+
+  void section(const std::string& chunk, std::uint64_t at) {
+    std::size_t end = 1;
+    while (end < chunk.size() && !isBlank(chunk[end])) ++end;
+    const std::string name = chunk.substr(1, end - 1);
+    section_ = name;
+    sectionAt_ = at;
+    if (chunk.find_first_not_of(" \t\r\n", end) != std::string::npos)
+      fail(at, "found " + shown(chunk) + " (expected a section marker '$Name' alone on its line)");
+    sectionTrailer_ = chunk.substr(end);
+    if (name.rfind("End", 0) == 0) fail(at, "found $" + name + " outside any section (expected $" + name.substr(3) + " before it)");
+    if (!seen_.insert(name).second) fail(at, "a second section $" + name + " (expected one)");
+    if (name == "PhysicalNames") {
+      physicalNames();
+      endSection("the last physical name");
+    } else if (name == "Entities" && version_ == 41) {
+      entities();
+      endSection("the entities");
+    } else if (name == "Nodes") {
+      version_ == 41 ? nodes41() : nodes22();
+      distinct(nodes_, "node");
+      nodesAt_ = at;
+      endSection("the nodes announced");
+    } else if (name == "Elements") {
+      version_ == 41 ? elements41() : elements22();
+      distinct(elements_, "element");
+      endSection("the elements announced");
+    } else if (readByGmsh(name)) {
+      fail(at, std::string("aster-lite does not read section $") + name + " in a binary file (expected the sections " +
+                   (version_ == 41 ? "$PhysicalNames, $Entities, $Nodes and $Elements" : "$PhysicalNames, $Nodes and $Elements") +
+                   " only; save the mesh as ASCII to keep the others)");
+    } else {
+      // A section gmsh does not know: it skips its lines up to "$End<name>".
+      std::string line;
+      for (;;) {
+        const std::uint64_t lineAt = pos_;
+        if (!nextChunk(line))
+          fail(lineAt, "the file ends inside section $" + name + " (expected $End" + name + "; truncated file?)");
+        if (line[0] != '$') continue;
+        if (line != "$End" + name + sectionTrailer_ && !(pos_ == size_ && isEndAtEof(line)))
+          fail(lineAt, "found " + shown(line) + " inside section $" + name + " (expected $End" + name + " first)");
+        break;
+      }
+    }
+  }
+
+  // Section names gmsh reads (it compares their beginnings only).
+  bool readByGmsh(const std::string& name) const {
+    static const char* const k41[] = {"MeshFormat", "PhysicalNames", "Entities",   "PartitionedEntities",
+                                      "Nodes",      "Elements",      "Periodic",   "GhostElements",
+                                      "Parametrizations", "NodeData", "ElementData", "ElementNodeData"};
+    static const char* const k22[] = {"MeshFormat", "PhysicalNames", "NO", "Nodes", "ParametricNodes", "ELM",
+                                      "Elements", "Periodic", "NodeData", "ElementData", "ElementNodeData"};
+    auto matches = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+    return version_ == 41 ? std::any_of(std::begin(k41), std::end(k41), matches)
+                          : std::any_of(std::begin(k22), std::end(k22), matches);
+  }
+
+  bool isEndAtEof(const std::string& line) const {
+    const std::string end = "$End" + section_;
+    return line.compare(0, end.size(), end) == 0 && line.find_first_not_of(" \t\r", end.size()) == std::string::npos;
+  }
+
+  // After a section's content: an optional newline, then "$End<name>" as gmsh
+  // expects it (the trailer of the opening marker; none at the end of the file).
+  void endSection(const std::string& after) {
+    std::uint64_t at = pos_;
+    std::string chunk;
+    bool got = nextChunk(chunk);
+    if (got && chunk == "\n") {
+      at = pos_;
+      got = nextChunk(chunk);
+    }
+    const std::string end = "$End" + section_;
+    if (got && (chunk == end + (section_ == "MeshFormat" ? trailer_ : sectionTrailer_) ||
+                (pos_ == size_ && isEndAtEof(chunk))))
+      return;
+    if (!got) fail(at, "the file ends after " + after + " (expected " + end + "; truncated file?)");
+    fail(at, "found " + shown(chunk) + " after " + after + " (expected " + end +
+                 ": a wrong count or size in the section, or a damaged file)");
+  }
+
+  // "<count>" then '<dimension> <tag> "<name>"' lines (text, also in a binary file).
+  void physicalNames() {
+    const std::uint64_t n = countLine("the number of physical names", 7);
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const std::uint64_t at = pos_;
+      std::string chunk;
+      if (!nextChunk(chunk) || chunk.back() != '\n')
+        fail(at, "the file ends inside physical name " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                     " (expected $EndPhysicalNames after them; truncated file?)");
+      const std::string wrong = physicalNameError(chunk);
+      if (!wrong.empty()) fail(at, wrong);
+    }
+  }
+
+  // MSH 4.1 $Entities: four counts, then per entity its tag, bounding box,
+  // physical tags and (curves, surfaces, volumes) bounding entities.
+  void entities() {
+    std::uint64_t counts[4];
+    for (int d = 0; d < 4; ++d)
+      counts[d] = readCount("the number of entities of dimension " + std::to_string(d), d == 0 ? 36 : 68);
+    for (int d = 0; d < 4; ++d)
+      for (std::uint64_t i = 0; i < counts[d]; ++i) {
+        const std::uint64_t at = pos_;
+        const std::string what = "entity " + std::to_string(i + 1) + " of dimension " + std::to_string(d);
+        const auto tag = read<std::int32_t>("the tag of " + what);
+        if (tag < 1) fail(at, what + " has tag " + std::to_string(tag) + " (expected a tag >= 1)");
+        if (!declared_.insert({d, tag}).second)
+          fail(at, "entity " + std::to_string(tag) + " of dimension " + std::to_string(d) +
+                       " is defined twice (expected distinct entity tags)");
+        entities_.insert({d, tag});
+        readArray<double>(d == 0 ? 3 : 6, "the bounding box of " + what);
+        const std::string of = " of entity " + std::to_string(tag) + " of dimension " + std::to_string(d);
+        readArray<std::int32_t>(readCount("the number of physical tags" + of, 4), "the physical tags" + of);
+        if (d > 0)
+          readArray<std::int32_t>(readCount("the number of bounding entities" + of, 4), "the bounding entities" + of);
+      }
+  }
+
+  static std::string blockText(const char* what, std::uint64_t b) { return std::string(what) + " block " + std::to_string(b); }
+
+  void checkDimension(std::int32_t dim, std::uint64_t at, const std::string& block) const {
+    if (dim < 0 || dim > 3)
+      fail(at, block + " has entity dimension " + std::to_string(dim) + " (expected 0, 1, 2 or 3)");
+  }
+
+  void newNode(std::uint64_t tag, std::uint64_t at, const double* x, int coordinates) {
+    if (tag < 1) fail(at, "node tag 0 (expected node tags >= 1)");
+    for (int k = 0; k < coordinates; ++k)
+      if (!std::isfinite(x[k]))
+        fail(at, "node " + std::to_string(tag) + " has a coordinate that is not a finite number (expected finite "
+                 "coordinates)");
+    nodes_.emplace_back(tag, at);
+  }
+
+  void newElement(std::uint64_t tag, std::uint64_t at) {
+    if (tag < 1) fail(at, "element tag 0 (expected element tags >= 1)");
+    elements_.emplace_back(tag, at);
+  }
+
+  // At the end of a section: each tag once (tags sorted, with their offsets: a
+  // large file is checked in 16 bytes per node rather than a hash set's 50).
+  void distinct(std::vector<std::pair<std::uint64_t, std::uint64_t>>& tags, const char* what) const {
+    std::sort(tags.begin(), tags.end());
+    for (std::size_t k = 1; k < tags.size(); ++k)
+      if (tags[k].first == tags[k - 1].first)
+        fail(tags[k].second, std::string(what) + " " + std::to_string(tags[k].first) +
+                                 " is defined twice (expected distinct " + what + " tags; the first is at byte " +
+                                 std::to_string(tags[k - 1].second) + ")");
+  }
+
+  void elementNode(std::uint64_t element, std::uint64_t node, std::uint64_t at) const {
+    const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), std::make_pair(node, std::uint64_t{0}));
+    if (it == nodes_.end() || it->first != node)
+      fail(at, "element " + std::to_string(element) + " refers to node " + std::to_string(node) +
+                   ", which is not defined (expected a node of a $Nodes section before $Elements" +
+                   (nodesAt_ ? ", at byte " + std::to_string(nodesAt_) : std::string()) + ")");
+  }
+
+  // The element type of a block: one aster-lite reads, of the dimension expected.
+  CellType blockType(std::int64_t gmshType, std::int32_t dim, std::uint64_t at, const std::string& block) const {
+    const auto type = gmshType == static_cast<int>(gmshType) ? cellTypeOfGmshElement(static_cast<int>(gmshType))
+                                                             : std::nullopt;
+    if (!type) fail(at, block + " has elements of " + unsupportedType(gmshType));
+    if (dim >= 0 && topologicalDimension(*type) != dim)
+      fail(at, block + " has elements of " + gmshTypeText(static_cast<int>(gmshType), *type) + ", cells of dimension " +
+                   std::to_string(topologicalDimension(*type)) + " (expected cells of dimension " +
+                   std::to_string(dim) + ", the dimension of their entity)");
+    return *type;
+  }
+
+  // MSH 4.1 $Nodes: "<blocks> <nodes> <min tag> <max tag>" (size_t), then blocks
+  // "<dim> <entity> <parametric>" (int) "<n>" (size_t), n tags, n coordinate sets.
+  void nodes41() {
+    const std::uint64_t at0 = pos_;
+    const std::uint64_t blocks = readCount("the number of node blocks", 20);
+    const std::uint64_t total = readCount("the number of nodes", 32);
+    read<std::uint64_t>("the smallest node tag");
+    read<std::uint64_t>("the largest node tag");
+    std::uint64_t sum = 0;
+    for (std::uint64_t b = 1; b <= blocks; ++b) {
+      const std::uint64_t at = pos_;
+      const std::string block = blockText("node", b);
+      const auto dim = read<std::int32_t>("the header of " + block);
+      const auto entity = read<std::int32_t>("the header of " + block);
+      const auto parametric = read<std::int32_t>("the header of " + block);
+      checkDimension(dim, at, block);
+      if (entity < 1) fail(at, block + " has entity tag " + std::to_string(entity) + " (expected a tag >= 1)");
+      if (parametric != 0 && parametric != 1)
+        fail(at, block + " has parametric flag " + std::to_string(parametric) + " (expected 0 or 1)");
+      entities_.insert({dim, entity});
+      const int coordinates = 3 + (parametric ? dim : 0);
+      const std::uint64_t n = readCount("the number of nodes of " + block, 8 * (1 + coordinates));
+      if (n > total - sum)
+        fail(at, block + " holds " + plural(n, "node") + ", more than the " + std::to_string(total) +
+                     " announced at byte " + std::to_string(at0 + 8) + " (the blocks before it hold " +
+                     std::to_string(sum) + ")");
+      sum += n;
+      const std::uint64_t tagsAt = pos_;
+      const auto tags = readArray<std::uint64_t>(n, "the node tags of " + block);
+      const auto xyz = readArray<double>(n * coordinates, "the node coordinates of " + block);
+      for (std::uint64_t j = 0; j < n; ++j)
+        newNode(tags[j], tagsAt + 8 * j, &xyz[j * coordinates], coordinates);
+    }
+    if (sum != total)
+      fail(at0 + 8, "the node blocks hold " + plural(sum, "node") + " (expected " + std::to_string(total) +
+                        ", as announced here)");
+  }
+
+  // MSH 4.1 $Elements: "<blocks> <elements> <min tag> <max tag>" (size_t), then
+  // blocks "<dim> <entity> <type>" (int) "<n>" (size_t), n x (tag, nodes) (size_t).
+  void elements41() {
+    const std::uint64_t at0 = pos_;
+    const std::uint64_t blocks = readCount("the number of element blocks", 20);
+    const std::uint64_t total = readCount("the number of elements", 16);
+    read<std::uint64_t>("the smallest element tag");
+    read<std::uint64_t>("the largest element tag");
+    std::uint64_t sum = 0;
+    for (std::uint64_t b = 1; b <= blocks; ++b) {
+      const std::uint64_t at = pos_;
+      const std::string block = blockText("element", b);
+      const auto dim = read<std::int32_t>("the header of " + block);
+      const auto entity = read<std::int32_t>("the header of " + block);
+      const auto gmshType = read<std::int32_t>("the header of " + block);
+      checkDimension(dim, at, block);
+      if (!entities_.count({dim, entity}))
+        fail(at, block + " is in entity " + std::to_string(entity) + " of dimension " + std::to_string(dim) +
+                     ", which is not defined (expected an entity of $Entities or of a node block)");
+      const int nn = nodeCount(blockType(gmshType, dim, at, block));
+      const std::uint64_t n = readCount("the number of elements of " + block, 8 * (1 + nn));
+      if (n > total - sum)
+        fail(at, block + " holds " + plural(n, "element") + ", more than the " + std::to_string(total) +
+                     " announced at byte " + std::to_string(at0 + 8) + " (the blocks before it hold " +
+                     std::to_string(sum) + ")");
+      sum += n;
+      const std::uint64_t dataAt = pos_;
+      const auto data = readArray<std::uint64_t>(n * (1 + nn), "the elements of " + block);
+      for (std::uint64_t e = 0; e < n; ++e) {
+        const std::uint64_t* v = &data[e * (1 + nn)];
+        const std::uint64_t eAt = dataAt + 8 * e * (1 + nn);
+        newElement(v[0], eAt);
+        for (int k = 1; k <= nn; ++k) elementNode(v[0], v[k], eAt + 8 * k);
+      }
+    }
+    if (sum != total)
+      fail(at0 + 8, "the element blocks hold " + plural(sum, "element") + " (expected " + std::to_string(total) +
+                        ", as announced here)");
+  }
+
+  // Whether "$End<section>" (after an optional newline) starts at byte `at`.
+  bool endMarkerAt(std::uint64_t at) {
+    const std::string end = "$End" + section_;
+    std::string bytes(end.size() + 1, '\0');
+    in_.seekg(static_cast<std::streamoff>(at));
+    in_.read(&bytes[0], static_cast<std::streamsize>(bytes.size()));
+    bytes.resize(static_cast<std::size_t>(in_.gcount()));
+    in_.clear();
+    in_.seekg(static_cast<std::streamoff>(pos_));
+    return bytes.compare(0, end.size(), end) == 0 || bytes == "\n" + end;
+  }
+
+  // MSH 2.2 $Nodes: "<count>" (text), then count x (tag (int), x y z (double)).
+  void nodes22() {
+    const std::uint64_t countAt = pos_;
+    const std::uint64_t n = countLine("the number of nodes", 28);
+    // Records of a fixed size: a wrong count is seen where they end.
+    if (!endMarkerAt(pos_ + 28 * n))
+      fail(countAt, std::to_string(n) + " nodes of 28 bytes announced, but $EndNodes does not follow them at byte " +
+                        std::to_string(pos_ + 28 * n) + " (expected the number of nodes of the section: a wrong count "
+                        "or a damaged file)");
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const std::uint64_t at = pos_;
+      const auto tag = read<std::int32_t>("the tag of node line " + std::to_string(i + 1));
+      const auto xyz = readArray<double>(3, "the coordinates of node line " + std::to_string(i + 1));
+      if (tag < 0) fail(at, "node tag " + std::to_string(tag) + " (expected node tags >= 1)");
+      newNode(static_cast<std::uint64_t>(tag), at, xyz.data(), 3);
+    }
+  }
+
+  // MSH 2.2 $Elements: "<count>" (text), then blocks "<type> <n> <number of
+  // tags>" (int), n x (tag, tags, nodes) (int), until count elements are read.
+  void elements22() {
+    const std::uint64_t countAt = pos_;
+    const std::uint64_t total = countLine("the number of elements", 8);
+    std::uint64_t sum = 0;
+    for (std::uint64_t b = 1; sum < total; ++b) {
+      const std::uint64_t at = pos_;
+      const std::string block = blockText("element", b);
+      const auto gmshType = read<std::int32_t>("the header of " + block);
+      const auto n = read<std::int32_t>("the header of " + block);
+      const auto tags = read<std::int32_t>("the header of " + block);
+      const int nn = nodeCount(blockType(gmshType, -1, at, block));
+      if (tags < 0 || tags > 2)
+        fail(at, block + " has " + std::to_string(tags) +
+                     " tags per element (expected 0 to 2: physical and elementary; aster-lite does not read "
+                     "partitioned binary MSH 2.2 files)");
+      if (n < 1 || static_cast<std::uint64_t>(n) > total - sum)
+        fail(at, block + " holds " + std::to_string(n) + " elements (expected 1 to " + std::to_string(total - sum) +
+                     ": " + std::to_string(total) + " announced at byte " + std::to_string(countAt) +
+                     ", the blocks before it hold " + std::to_string(sum) + ")");
+      const std::uint64_t width = 1 + static_cast<std::uint64_t>(tags) + nn;
+      count(static_cast<std::uint64_t>(n), at + 4, "the number of elements of " + block, 4 * width);
+      sum += static_cast<std::uint64_t>(n);
+      const std::uint64_t dataAt = pos_;
+      const auto data = readArray<std::int32_t>(static_cast<std::uint64_t>(n) * width, "the elements of " + block);
+      for (std::uint64_t e = 0; e < static_cast<std::uint64_t>(n); ++e) {
+        const std::int32_t* v = &data[e * width];
+        const std::uint64_t eAt = dataAt + 4 * e * width;
+        if (v[0] < 0) fail(eAt, "element tag " + std::to_string(v[0]) + " (expected element tags >= 1)");
+        newElement(static_cast<std::uint64_t>(v[0]), eAt);
+        for (std::uint64_t k = 1 + tags; k < width; ++k)
+          if (v[k] < 1)
+            fail(eAt + 4 * k, "element " + std::to_string(v[0]) + " refers to node " + std::to_string(v[k]) +
+                                  " (expected node tags >= 1)");
+          else
+            elementNode(static_cast<std::uint64_t>(v[0]), static_cast<std::uint64_t>(v[k]), eAt + 4 * k);
+      }
+    }
+  }
+
+  std::string path_;
+  int version_;
+  std::ifstream& in_;
+  std::uint64_t pos_ = 0, size_ = 0;
+  std::string trailer_;
+  // The section being read.
+  std::string section_, sectionTrailer_;
+  std::uint64_t sectionAt_ = 0;
+  std::set<std::string> seen_;
+  std::set<std::pair<int, int>> declared_, entities_;  // (dim, tag): of $Entities; of $Entities and node blocks
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> nodes_, elements_;  // (tag, offset), sorted once complete
+  std::uint64_t nodesAt_ = 0;
+};
+
 class MshChecker {
  public:
   explicit MshChecker(std::string path) : path_(std::move(path)) {}
@@ -122,6 +593,7 @@ class MshChecker {
     if (line[0] != '$')
       fail(1, "found blanks before $MeshFormat (expected $MeshFormat at the start of the first line of " +
                   std::string(kMshExpected) + ")");
+    const std::string firstLine = line;
     const char* headerForm = "'<version> <file-type> <data-size>', e.g. '4.1 0 8'";
     if (!std::getline(in, line))
       fail(line_, std::string("the file ends after $MeshFormat (expected ") + headerForm + ")");
@@ -143,7 +615,11 @@ class MshChecker {
     if (fileType != 0 && fileType != 1)
       fail(line_, "file type " + words[1] + " (expected 0 for ASCII or 1 for binary)");
     if (dataSize != 8) fail(line_, "data size " + words[2] + " (expected 8, the size of a double)");
-    if (fileType == 1) return;  // binary: gmsh reads the rest
+    if (fileType == 1) {
+      // gmsh expects "$EndMeshFormat" followed by what followed "$MeshFormat".
+      const std::string trailer = firstLine.substr(std::string("$MeshFormat").size()) + "\n";
+      return BinaryMshChecker(path_, version_, in, static_cast<std::uint64_t>(in.tellg()), trailer).run();
+    }
 
     open("MeshFormat", first);
     while (std::getline(in, line)) {
@@ -164,7 +640,7 @@ class MshChecker {
   }
 
  private:
-  enum class Kind { Other, Nodes22, Elements22, Nodes41, Elements41 };
+  enum class Kind { Other, Names, Nodes22, Elements22, Nodes41, Elements41 };
 
   [[noreturn]] void fail(std::size_t line, const std::string& what) const {
     throw Error(path_ + ":" + std::to_string(line) + ": " + what);
@@ -178,6 +654,7 @@ class MshChecker {
     section_ = name;
     sectionLine_ = line;
     kind_ = Kind::Other;
+    if (name == "PhysicalNames") kind_ = Kind::Names;
     if (name == "Nodes" && version_ == 22) kind_ = Kind::Nodes22;
     if (name == "Elements" && version_ == 22) kind_ = Kind::Elements22;
     if (name == "Nodes" && version_ == 41) kind_ = Kind::Nodes41;
@@ -216,6 +693,8 @@ class MshChecker {
     switch (kind_) {
       case Kind::Other:
         return;
+      case Kind::Names:
+        return contentNames(line, w);
       case Kind::Nodes22:
       case Kind::Elements22:
         return content22(line, w);
@@ -227,6 +706,23 @@ class MshChecker {
 
   bool nodes() const { return kind_ == Kind::Nodes22 || kind_ == Kind::Nodes41; }
   std::string what() const { return nodes() ? "node" : "element"; }
+
+  // "<count>" then count lines '<dimension> <tag> "<name>"'.
+  void contentNames(const std::string& line, const std::vector<std::string>& w) {
+    long long n = 0;
+    if (countLine_ == 0) {
+      if (w.size() != 1 || !parseInteger(w[0], n) || n < 0 || n > INT32_MAX)
+        return defer("found " + shown(line) + " after $PhysicalNames (expected the number of physical names)");
+      countLine_ = line_;
+      count_ = static_cast<std::size_t>(n);
+      return;
+    }
+    if (++seen_ > count_)
+      return defer("found " + shown(line) + ", one physical name more than the " + std::to_string(count_) +
+                   " announced at line " + std::to_string(countLine_) + " (expected $EndPhysicalNames)");
+    const std::string wrong = physicalNameError(line);
+    if (!wrong.empty()) defer(wrong);
+  }
 
   // "<count>" then count lines.
   void content22(const std::string& line, const std::vector<std::string>& w) {
@@ -342,6 +838,13 @@ class MshChecker {
   void close() {
     if (kind_ == Kind::Other || !deferred_.empty()) return;
     const std::string end = "found $End" + section_;
+    if (kind_ == Kind::Names) {
+      if (countLine_ == 0) return defer(end + " (expected the number of physical names on the line after $PhysicalNames)");
+      if (seen_ < count_)
+        return defer(end + " after " + plural(seen_, "physical name") + " (expected " + std::to_string(count_) +
+                     ", as announced at line " + std::to_string(countLine_) + ")");
+      return;
+    }
     if (countLine_ == 0)
       return defer(end + " (expected the number of " + what() + "s on the line after $" + section_ + ")");
     if (kind_ == Kind::Nodes22 || kind_ == Kind::Elements22) {

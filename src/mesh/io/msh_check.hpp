@@ -1,7 +1,8 @@
-// aster-lite's own light check of a gmsh .msh file, made before the file is
-// handed to gmsh: gmsh reports a malformed file only as "Error loading", this
-// check says which line is wrong and what was expected. It does not parse the
-// mesh (gmsh does); it needs no gmsh library.
+// aster-lite's own check of a gmsh .msh file, made before the file is handed to
+// gmsh: gmsh reports a malformed file only as "Error loading", this check says
+// which line is wrong and what was expected. A binary file is checked in full:
+// gmsh's binary readers trust every count, tag and size they read and crash on
+// a damaged file. It does not build the mesh (gmsh does); it needs no gmsh library.
 #pragma once
 #include <optional>
 #include <string>
@@ -17,14 +18,24 @@ inline constexpr const char* kMshExpected = "a gmsh .msh file, version 2.2 or 4.
 //  - the first non-empty line is not $MeshFormat, or it is not at the very start
 //    of the file (gmsh would read the file as a .geo script), or the next one is not
 //    "<version> <file-type> <data-size>" with version 2.2, 4.0 or 4.1, file type
-//    0 (ASCII) or 1 (binary) and data size 8; a binary file is checked no further;
+//    0 (ASCII) or 1 (binary) and data size 8;
 //  - (ASCII) a $Section is not closed by its $EndSection (the line given is the
 //    one of the section left open), an $EndSection closes another section or none;
 //  - (ASCII 2.2) the counts after $Nodes / $Elements do not match the lines that
 //    follow, a node line is not "<tag> <x> <y> <z>", an element line is not
 //    "<tag> <type> <ntags> <tags> <nodes>", its type has no code_aster
 //    equivalent, it has the wrong number of nodes or a node that $Nodes lacks;
-//  - (ASCII 4.1) the same for the entity blocks of $Nodes and $Elements.
+//  - (ASCII 4.1) the same for the entity blocks of $Nodes and $Elements;
+//  - a $PhysicalNames line is not '<dimension> <tag> "<name>"' with dimension 0 to 3;
+//  - (binary, "<path>: byte <offset> (binary section $<name> at byte <offset>): ...")
+//    the file is not 4.1 or 2.2, the integer after the version line is not 1, a
+//    section is not closed by "$End<name>" right after its content, a count is
+//    larger than the rest of the file can hold or than the blocks it announces,
+//    a node or element tag is 0 or defined twice, a coordinate is not finite, an
+//    element type has no code_aster equivalent or is not of its entity's
+//    dimension, an element refers to an undefined node or entity, or the file
+//    has a section gmsh reads that aster-lite does not check ($Periodic,
+//    $PartitionedEntities, $NodeData...: refused; unknown sections are skipped).
 // Text between sections is skipped, as gmsh does, and so is every line of $Comments.
 // A section left open is reported before any error on the lines inside it (a
 // truncated file reads as such, not as a bad last line).
