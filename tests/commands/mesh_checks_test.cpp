@@ -86,8 +86,10 @@ TEST_F(MeshChecks, NanInAMedMeshIsNamed) {
   mesh::writeMedMesh(squareWithNaN(), file.string());
   const StudyRun r = read("MED", file);
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find(file.string() + ": node '"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("' has a coordinate that is not a finite number: (1, nan, 0)"), std::string::npos) << r.err;
+  // The MED reader itself names the node (before the check common to every format).
+  EXPECT_NE(r.err.find(file.string() + ": node N3 of mesh 'MAIL' has a coordinate that is not a finite number"),
+            std::string::npos)
+      << r.err;
 }
 #endif
 
@@ -98,5 +100,7 @@ TEST_F(MeshChecks, NanInABinaryMshMeshIsNamed) {
   mesh::writeGmshMesh(squareWithNaN(), file.string(), binary);
   const StudyRun r = read("GMSH", file);
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("has a coordinate that is not a finite number: (1, nan, 0)"), std::string::npos) << r.err;
+  // The binary MSH check names the node and its byte before gmsh reads the file.
+  EXPECT_NE(r.err.find(file.string() + ": byte "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("node 3 has a coordinate that is not a finite number"), std::string::npos) << r.err;
 }
