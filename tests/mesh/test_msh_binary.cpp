@@ -237,6 +237,11 @@ TEST(MshBinary, FramingAndSections) {
                                "found the binary integer 16777216 after the version line (expected 1: a file written "
                                "on a machine of another byte order, or a damaged file)");
 
+  // The file ends with the version line.
+  path = writeFile("version_only.msh", "$MeshFormat\n4.1 1 8");
+  EXPECT_EQ(errorOf(path), at(path, 19, "MeshFormat", 0) +
+                               "the file ends inside the integer 1 that follows the version line (truncated file?)");
+
   File41 p;
   p.extra = "$Periodic\n1\n$EndPeriodic\n";
   path = writeFile("periodic.msh", p.bytes());

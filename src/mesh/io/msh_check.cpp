@@ -142,7 +142,8 @@ class BinaryMshChecker {
     in_.clear();
     in_.seekg(0, std::ios::end);
     size_ = static_cast<std::uint64_t>(in_.tellg());
-    in_.seekg(static_cast<std::streamoff>(start));
+    pos_ = std::min(start, size_);  // a version line without newline ends the file (tellg gave -1)
+    in_.seekg(static_cast<std::streamoff>(pos_));
   }
 
   void run() {
