@@ -56,11 +56,11 @@ void Session::checkUnitWritable(int unit, const std::filesystem::path& path) {
     throw Error(unitText + " is bound to " + path.string() + ", an input of the study (" + how +
                 "): aster-lite never writes over a file the study read; bind another file to the unit");
   if (unsafeLua || !unitsBoundByStudy.count(unit)) return;
-  std::error_code ec;
-  const fs::path file = fs::weakly_canonical(fs::absolute(path), ec);
-  const fs::path folder = fs::weakly_canonical(fs::absolute(outputDir), ec);
+  std::error_code fileError, folderError;
+  const fs::path file = fs::weakly_canonical(fs::absolute(path), fileError);
+  const fs::path folder = fs::weakly_canonical(fs::absolute(outputDir), folderError);
   const auto rel = file.lexically_relative(folder);
-  if (ec || rel.empty() || *rel.begin() == "..")
+  if (fileError || folderError || rel.empty() || *rel.begin() == "..")
     throw Error(unitText + " is bound by DEFI_FICHIER to " + path.string() +
                 ", outside the output folder " + outputDir.string() +
                 ": a study writes only below its output folder (bind the unit with -u on the command line, "
