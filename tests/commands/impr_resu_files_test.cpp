@@ -12,10 +12,13 @@
 #include "lang/interpreter.hpp"
 #include "mesh/io/aster_format.hpp"
 #include "mesh/io/med_format.hpp"
+#include "../support/scratch_files.hpp"
 
 using namespace aster;
 using namespace aster::lang;
 namespace fs = std::filesystem;
+
+using aster::test::readFile;
 
 namespace {
 
@@ -26,12 +29,7 @@ struct StudyRun {
   std::string out, err;
 };
 
-fs::path freshDir(const std::string& name) {
-  const fs::path dir = fs::path(ASTER_BINARY_DIR) / "impr_resu_files_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path freshDir(const std::string& name) { return test::freshDir("impr_resu_files_test", name); }
 
 StudyRun run(const fs::path& dir, const fs::path& outputDir, const std::string& code) {
   Session session;
@@ -42,13 +40,6 @@ StudyRun run(const fs::path& dir, const fs::path& outputDir, const std::string& 
   testing::internal::CaptureStderr();
   const int status = interpreter.runString(code, "@etude.lua");
   return {status, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
-}
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // Two linear elastic results on the square, the second with twice the imposed

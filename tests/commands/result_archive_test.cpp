@@ -3,6 +3,7 @@
 // folder an earlier run used: the .pvd always lists exactly the files on disk,
 // each of them whole, and no file of an earlier run mixes with this run's.
 #include "commands/result_archive.hpp"
+#include "../support/scratch_files.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -22,21 +23,11 @@ using namespace aster;
 using namespace aster::lang;
 namespace fs = std::filesystem;
 
+using aster::test::readFile;
+
 namespace {
 
-fs::path freshDir(const std::string& name) {
-  const fs::path dir = fs::path(ASTER_BINARY_DIR) / "result_archive_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path freshDir(const std::string& name) { return test::freshDir("result_archive_test", name); }
 
 void writeFile(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 

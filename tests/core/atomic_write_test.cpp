@@ -3,6 +3,7 @@
 // aster::Error naming the file and the system's reason, the file in place stays
 // as it was, and no file the study read is ever written over.
 #include "core/atomic_write.hpp"
+#include "../support/scratch_files.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -19,21 +20,11 @@
 using namespace aster;
 namespace fs = std::filesystem;
 
+using aster::test::readFile;
+
 namespace {
 
-fs::path freshDir(const std::string& name) {
-  const fs::path dir = fs::path(ASTER_BINARY_DIR) / "atomic_write_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path freshDir(const std::string& name) { return test::freshDir("atomic_write_test", name); }
 
 template <typename F>
 std::string errorOf(F f) {
