@@ -572,16 +572,16 @@ class ExpressionCompiler {
       int node;
       std::size_t emitted;  // operands already emitted
     };
-    std::vector<Pending> todo{{root, 0}};
-    while (!todo.empty()) {
-      Pending& p = todo.back();
+    std::vector<Pending> stack{{root, 0}};
+    while (!stack.empty()) {
+      Pending& p = stack.back();
       const Node& n = nodes_[p.node];
       if (p.emitted < operandsToEmit(n)) {
         const int kid = n.kids[p.emitted++];
-        todo.push_back({kid, 0});  // p is invalid from here
+        stack.push_back({kid, 0});  // p is invalid from here
         continue;
       }
-      todo.pop_back();
+      stack.pop_back();
       emitOperation(n);
     }
   }
