@@ -21,9 +21,9 @@
 
 #include "support/square_mesh.hpp"
 #include "expr/expression.hpp"
-#include "solver/blas_info.hpp"
-#include "solver/factor_memory.hpp"
-#include "solver/static_nonlinear.hpp"
+#include "linalg/blas_info.hpp"
+#include "linalg/factor_memory.hpp"
+#include "analysis/static_nonlinear.hpp"
 
 using namespace aster;
 
@@ -77,21 +77,21 @@ void run(int N, const std::string& method) {
   load.imposed.push_back({top, 0, model::SpaceFunction(0.02)});
   load.imposed.push_back({top, 1, model::SpaceFunction(-0.015)});
   auto ramp = expr::Expression::compile("INST", {"INST"});
-  solver::MechanicalProblem problem;
+  analysis::MechanicalProblem problem;
   problem.model = model;
   problem.materials = materials;
   problem.loads.push_back({&load, ramp});
   problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::TotalLagrangianSVK);
-  solver::MechanicalSystem system(problem);
-  solver::NewtonSettings settings;
+  analysis::MechanicalSystem system(problem);
+  analysis::NewtonSettings settings;
   settings.print = getenv("NEWTON_PRINT") != nullptr;
   settings.resiGlobRela = 1e-8;
   settings.method = method;
-  solver::StaticNonlinear newton(system, nullptr, settings);
+  analysis::StaticNonlinear newton(system, nullptr, settings);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newton.unknownCount());
   const std::vector<double> times = {0, 0.2, 0.4, 0.6, 0.8, 1.0};
   double rx = 0, ry = 0;
-  newton.run(U, times, [&](const solver::ConvergedInstant& c) {
+  newton.run(U, times, [&](const analysis::ConvergedInstant& c) {
     rx = ry = 0;
     for (int n : top) {
       rx += (*c.reactions)(system.dof(n, 0));
@@ -123,9 +123,9 @@ void run(int N, const std::string& method) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  solver::selectBlasKernels(argv);
-  solver::selectHugePages(argv);
-  solver::keepFactorWorkspaces();
+  linalg::selectBlasKernels(argv);
+  linalg::selectHugePages(argv);
+  linalg::keepFactorWorkspaces();
   std::vector<int> sizes;
   std::string method = "CHOLMOD";
   int dgemmSize = 0;
@@ -139,13 +139,13 @@ int main(int argc, char** argv) {
     else
       sizes.push_back(std::atoi(argv[i]));
   }
-  const solver::BlasInfo blas = solver::blasInUse();
+  const linalg::BlasInfo blas = linalg::blasInUse();
   std::printf("%s BLAS: %s (%s, core %s, %d threads)\n", csv ? "#" : "", blas.library.c_str(),
               blas.openblasConfig.empty() ? "-" : blas.openblasConfig.c_str(),
-              blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(), solver::startupBlasThreads());
+              blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(), linalg::startupBlasThreads());
   if (dgemmSize > 0) {
     // Every thread OpenBLAS would use, although the process started it on one.
-    const solver::ScopedBlasThreads all(solver::startupBlasThreads());
+    const linalg::ScopedBlasThreads all(linalg::startupBlasThreads());
     std::printf("%s dgemm n=%d: %.1f GFLOP/s\n", csv ? "#" : "", dgemmSize, dgemmRate(dgemmSize));
   }
   if (csv) {

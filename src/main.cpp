@@ -14,8 +14,8 @@
 #include "lang/docgen.hpp"
 #include "lang/interpreter.hpp"
 #include "lang/session.hpp"
-#include "solver/blas_info.hpp"
-#include "solver/factor_memory.hpp"
+#include "linalg/blas_info.hpp"
+#include "linalg/factor_memory.hpp"
 
 namespace {
 
@@ -48,10 +48,10 @@ int usageError(const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  aster::solver::selectBlasKernels(argv);
-  aster::solver::selectHugePages(argv);
-  aster::solver::keepFactorWorkspaces();
-  if (const std::string error = aster::solver::reserveBlasBuffer(); !error.empty()) {
+  aster::linalg::selectBlasKernels(argv);
+  aster::linalg::selectHugePages(argv);
+  aster::linalg::keepFactorWorkspaces();
+  if (const std::string error = aster::linalg::reserveBlasBuffer(); !error.empty()) {
     std::fprintf(stderr, "<F> <aster-lite> %s\n", error.c_str());
     return 2;
   }

@@ -15,7 +15,7 @@
 #include "core/error.hpp"
 #include "core/messages.hpp"
 #include "expr/expression.hpp"
-#include "expr/manufactured.hpp"
+#include "mechanics/manufactured.hpp"
 #include "lang/operators.hpp"
 
 namespace aster::lang {
@@ -43,7 +43,7 @@ expr::ExpressionPtr expressionOf(const Keywords& occ, const std::string& key) {
 
 // Samples p along the cells of a group: 20 points per segment, through its
 // isoparametric map. Warns when the exact solution is not in contact (p > 0).
-void checkContactConditions(const mesh::Mesh& mesh, const std::string& group, const expr::ManufacturedElasticity& s,
+void checkContactConditions(const mesh::Mesh& mesh, const std::string& group, const mechanics::ManufacturedElasticity& s,
                             const Eigen::Vector2d& N, bool verbose) {
   double pmin = 1e300, pmax = -1e300, xAtMax = 0, yAtMax = 0;
   for (int c : mesh.cellGroup(group)) {
@@ -94,14 +94,14 @@ ConceptPtr calcSoluManu(const Keywords& k, Session&, ConceptPtr) {
   const auto ux = expressionOf(depl, "DX");
   const auto uy = expressionOf(depl, "DY");
   const auto& mat = *static_cast<MaterialConcept&>(*k.conceptPtr("MATER")).material;
-  auto sol = std::make_shared<expr::ManufacturedElasticity>(
-      ux, uy, mat.E, mat.NU, expr::planeHypothesisFromName(k.text("MODELISATION")),
-      expr::kinematicsFromName(k.text("DEFORMATION")));
+  auto sol = std::make_shared<mechanics::ManufacturedElasticity>(
+      ux, uy, mat.E, mat.NU, mechanics::planeHypothesisFromName(k.text("MODELISATION")),
+      mechanics::kinematicsFromName(k.text("DEFORMATION")));
   auto out = std::make_shared<ManufacturedConcept>();
-  using Q = expr::ManufacturedQuantity;
+  using Q = mechanics::ManufacturedQuantity;
   out->groups["DEPL"] = {{"DX", depl.conceptPtr("DX")}, {"DY", depl.conceptPtr("DY")}};
-  out->groups["FORCE_INTERNE"] = {{"FX", formula(expr::manufacturedFunction(sol, Q::BodyForce, 0))},
-                                  {"FY", formula(expr::manufacturedFunction(sol, Q::BodyForce, 1))}};
+  out->groups["FORCE_INTERNE"] = {{"FX", formula(mechanics::manufacturedFunction(sol, Q::BodyForce, 0))},
+                                  {"FY", formula(mechanics::manufacturedFunction(sol, Q::BodyForce, 1))}};
   const mesh::Mesh* mesh = k.has("MAILLAGE") ? &meshOf(k.conceptPtr("MAILLAGE")) : nullptr;
   for (const auto& bord : k.factor("BORD")) {
     const std::string name = bord.text("NOM");
@@ -111,12 +111,12 @@ ConceptPtr calcSoluManu(const Keywords& k, Session&, ConceptPtr) {
     const Eigen::Vector2d N(n[0], n[1]);
     if (N.norm() == 0) throw Error(bord.path + ": NORMALE must not be zero");
     auto& g = out->groups[name];
-    g = {{"FX", formula(expr::manufacturedFunction(sol, Q::Traction, 0, N))},
-         {"FY", formula(expr::manufacturedFunction(sol, Q::Traction, 1, N))}};
+    g = {{"FX", formula(mechanics::manufacturedFunction(sol, Q::Traction, 0, N))},
+         {"FY", formula(mechanics::manufacturedFunction(sol, Q::Traction, 1, N))}};
     if (bord.text("CONTACT") == "OUI") {
-      g.push_back({"FX_T", formula(expr::manufacturedFunction(sol, Q::TangentialTraction, 0, N))});
-      g.push_back({"FY_T", formula(expr::manufacturedFunction(sol, Q::TangentialTraction, 1, N))});
-      g.push_back({"PRES", formula(expr::manufacturedFunction(sol, Q::ContactPressure, 0, N))});
+      g.push_back({"FX_T", formula(mechanics::manufacturedFunction(sol, Q::TangentialTraction, 0, N))});
+      g.push_back({"FY_T", formula(mechanics::manufacturedFunction(sol, Q::TangentialTraction, 1, N))});
+      g.push_back({"PRES", formula(mechanics::manufacturedFunction(sol, Q::ContactPressure, 0, N))});
       if (mesh)
         checkContactConditions(*mesh, name, *sol, N.normalized(), k.integer("INFO") >= 1);
       else

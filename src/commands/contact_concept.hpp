@@ -5,15 +5,15 @@
 #include <memory>
 
 #include "core/concept.hpp"
-#include "solver/additional_terms.hpp"
-#include "solver/mechanical_system.hpp"
+#include "analysis/additional_terms.hpp"
+#include "analysis/mechanical_system.hpp"
 
 namespace aster::lang {
 
 class ContactConcept : public Concept {
  public:
   std::string typeName() const override { return "char_contact"; }
-  std::function<std::unique_ptr<solver::AdditionalTerms>(const solver::MechanicalSystem&)> makeTerms;
+  std::function<std::unique_ptr<analysis::AdditionalTerms>(const analysis::MechanicalSystem&)> makeTerms;
   std::string formulation;  // DISCRETE or CONTINUE
 };
 

@@ -13,7 +13,7 @@
 #include "commands/model_concepts.hpp"
 #include "core/error.hpp"
 #include "lang/operators.hpp"
-#include "solver/contact_terms.hpp"
+#include "analysis/contact_terms.hpp"
 
 namespace aster::lang {
 namespace {
@@ -44,14 +44,14 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   const auto& mesh = model->mesh();
   if (k.text("FROTTEMENT", "SANS") != "SANS")
     throw Error("FROTTEMENT='" + k.text("FROTTEMENT") + "': aster-lite's contact is frictionless (FROTTEMENT='SANS')");
-  solver::ContactSettings settings;
+  analysis::ContactSettings settings;
   const std::string formulation = k.text("FORMULATION", "DISCRETE");
   settings.continueFormulation = formulation == "CONTINUE";
   settings.info = static_cast<int>(k.integer("INFO"));
   const bool checkNormals = k.text("VERI_NORM", "OUI") == "OUI";
-  std::vector<solver::ContactZone> zones;
+  std::vector<analysis::ContactZone> zones;
   for (const auto& z : k.factor("ZONE")) {
-    solver::ContactZone zone;
+    analysis::ContactZone zone;
     auto& zs = zone.settings;
     zone.masterCells = ofGroups(z, "GROUP_MA_MAIT", [&] { return mesh.cellGroup(z.text("GROUP_MA_MAIT")); });
     zone.slaveCells = ofGroups(z, "GROUP_MA_ESCL", [&] { return mesh.cellGroup(z.text("GROUP_MA_ESCL")); });
@@ -63,7 +63,7 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
     if (checkNormals)
       for (const std::string key : {"GROUP_MA_MAIT", "GROUP_MA_ESCL"}) {
         const auto [cell, inside] =
-            solver::inwardContactCell(mesh, key == "GROUP_MA_MAIT" ? zone.masterCells : zone.slaveCells);
+            analysis::inwardContactCell(mesh, key == "GROUP_MA_MAIT" ? zone.masterCells : zone.slaveCells);
         if (cell >= 0)
           throw Error(z.path + "/" + key + ": the normal of cell " + mesh.cellName(cell) + " (group '" + z.text(key) +
                       "') points into the cell " + mesh.cellName(inside) +
@@ -110,8 +110,8 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   }
   auto c = std::make_shared<ContactConcept>();
   c->formulation = formulation;
-  c->makeTerms = [zones, settings](const solver::MechanicalSystem& system) {
-    return solver::makeContactTerms(system, zones, settings);
+  c->makeTerms = [zones, settings](const analysis::MechanicalSystem& system) {
+    return analysis::makeContactTerms(system, zones, settings);
   };
   return c;
 }

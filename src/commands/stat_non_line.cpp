@@ -15,7 +15,7 @@
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "lang/operators.hpp"
-#include "solver/static_nonlinear.hpp"
+#include "analysis/static_nonlinear.hpp"
 
 namespace aster::lang {
 namespace {
@@ -68,7 +68,7 @@ std::vector<double> instantsOf(const Keywords& inc, int& subdPas, int& subdNivea
 ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   auto model = static_cast<ModelConcept&>(*k.conceptPtr("MODELE")).model;
   const auto& mesh = model->mesh();
-  solver::MechanicalProblem problem;
+  analysis::MechanicalProblem problem;
   problem.model = model;
   auto matField = std::static_pointer_cast<MaterialFieldConcept>(k.conceptPtr("CHAM_MATER"));
   if (matField->mesh != model->meshPtr())
@@ -88,7 +88,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   for (const auto& occ : k.factor("EXCIT")) {
     auto load = std::static_pointer_cast<LoadConcept>(occ.conceptPtr("CHARGE"));
     if (load->model != model) throw Error(occ.path + ": CHARGE was defined on another MODELE");
-    solver::AppliedLoad applied;
+    analysis::AppliedLoad applied;
     applied.load = &load->load;
     applied.follower = occ.text("TYPE_CHARGE", "FIXE_CSTE") == "SUIV";
     if (applied.follower) {
@@ -116,14 +116,14 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     keep.push_back(load);
   }
 
-  solver::NewtonSettings settings;
+  analysis::NewtonSettings settings;
   const auto& newton = k.factor("NEWTON").front();
   const std::string matrice = newton.text("MATRICE", "TANGENTE");
   settings.elasticMatrix = matrice == "ELASTIQUE";
   const std::string prediction = newton.text("PREDICTION", matrice);
-  settings.prediction = prediction == "ELASTIQUE"   ? solver::Prediction::Elastic
-                        : prediction == "EXTRAPOLE" ? solver::Prediction::Extrapolated
-                                                    : solver::Prediction::Tangent;
+  settings.prediction = prediction == "ELASTIQUE"   ? analysis::Prediction::Elastic
+                        : prediction == "EXTRAPOLE" ? analysis::Prediction::Extrapolated
+                                                    : analysis::Prediction::Tangent;
   settings.reacIter = static_cast<int>(newton.has("REAC_ITER") ? newton.integer("REAC_ITER") : 1);
   settings.reacIncr = static_cast<int>(newton.has("REAC_INCR") ? newton.integer("REAC_INCR") : 1);
   const auto& conv = k.factor("CONVERGENCE").front();
@@ -169,10 +169,10 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   const auto times = instantsOf(k.factor("INCREMENT").front(), settings.subdPas, settings.subdNiveau,
                                 initial ? &initialTime : nullptr);
 
-  solver::MechanicalSystem system(problem);
-  std::unique_ptr<solver::AdditionalTerms> terms;
+  analysis::MechanicalSystem system(problem);
+  std::unique_ptr<analysis::AdditionalTerms> terms;
   if (k.has("CONTACT")) terms = static_cast<ContactConcept&>(*k.conceptPtr("CONTACT")).makeTerms(system);
-  solver::StaticNonlinear newtonSolver(system, terms.get(), settings);
+  analysis::StaticNonlinear newtonSolver(system, terms.get(), settings);
 
   std::shared_ptr<ResultConcept> result =
       reuse ? std::static_pointer_cast<ResultConcept>(reuse) : std::make_shared<ResultConcept>(model);
@@ -230,7 +230,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   }
   Messages::info("STAT_NON_LINE: each converged instant is written to " + archive.path().string());
 
-  auto store = [&](const solver::ConvergedInstant& c) {
+  auto store = [&](const analysis::ConvergedInstant& c) {
     ResultInstant inst;
     inst.index = static_cast<int>(result->instants.size());
     inst.time = c.time;

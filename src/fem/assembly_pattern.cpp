@@ -88,19 +88,19 @@ AssemblyPattern::AssemblyPattern(int dofCount, const ElementDofs& elements)
   std::fill(pattern_.valuePtr(), pattern_.valuePtr() + nonZeros_, 0.0);
 }
 
-SparseMatrix AssemblyPattern::newMatrix() const {
+linalg::SparseMatrix AssemblyPattern::newMatrix() const {
   if (taken_) throw Error("AssemblyPattern: newMatrix() after takeMatrix()");
   return pattern_;
 }
 
-void AssemblyPattern::takeMatrix(SparseMatrix& A) {
+void AssemblyPattern::takeMatrix(linalg::SparseMatrix& A) {
   if (taken_) throw Error("AssemblyPattern: takeMatrix() called twice");
   taken_ = true;
   A.swap(pattern_);
-  pattern_ = SparseMatrix();
+  pattern_ = linalg::SparseMatrix();
 }
 
-void AssemblyPattern::checkSize(int e, int rows, int cols, const SparseMatrix& A) const {
+void AssemblyPattern::checkSize(int e, int rows, int cols, const linalg::SparseMatrix& A) const {
   if (e < 0 || e >= elements_.elementCount())
     throw Error("AssemblyPattern: element " + std::to_string(e) + " out of range");
   const int n = elements_.size(e);

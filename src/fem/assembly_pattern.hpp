@@ -13,10 +13,9 @@
 #include <Eigen/SparseCore>
 
 #include "fem/element_dofs.hpp"
+#include "linalg/sparse_matrix.hpp"
 
 namespace aster::fem {
-
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 class AssemblyPattern {
  public:
@@ -28,14 +27,14 @@ class AssemblyPattern {
   const ElementDofs& elements() const { return elements_; }
 
   // A matrix with the pattern and all values zero.
-  SparseMatrix newMatrix() const;
+  linalg::SparseMatrix newMatrix() const;
   // Hands the pattern's own matrix (values zero) over to A, swapped, not copied (Eigen 3.4's
   // sparse matrices have no move): a large model's matrix is hundreds of MB, and memory
   // touched for the first time is slow to get (page faults). newMatrix() and takeMatrix()
   // cannot be called after.
-  void takeMatrix(SparseMatrix& A);
+  void takeMatrix(linalg::SparseMatrix& A);
   // Sets all values of a matrix from newMatrix() to zero, keeping the pattern.
-  static void clear(SparseMatrix& A) { std::fill(A.valuePtr(), A.valuePtr() + A.nonZeros(), 0.0); }
+  static void clear(linalg::SparseMatrix& A) { std::fill(A.valuePtr(), A.valuePtr() + A.nonZeros(), 0.0); }
 
   // Positions in the value array of element e's entries, column-major over the
   // local (n x n) matrix: entry (i, j) at [j*n + i]; -1 where not assembled.
@@ -49,7 +48,7 @@ class AssemblyPattern {
       if (pos[k] >= 0) values[pos[k]] += Ke[k];
   }
   template <class Derived>
-  void addMatrix(int e, const Eigen::PlainObjectBase<Derived>& Ke, SparseMatrix& A) const {
+  void addMatrix(int e, const Eigen::PlainObjectBase<Derived>& Ke, linalg::SparseMatrix& A) const {
     static_assert(!Derived::IsRowMajor, "element matrices must be column-major");
     checkSize(e, static_cast<int>(Ke.rows()), static_cast<int>(Ke.cols()), A);
     addMatrix(e, Ke.data(), A.valuePtr());
@@ -75,11 +74,11 @@ class AssemblyPattern {
   }
 
  private:
-  void checkSize(int e, int rows, int cols, const SparseMatrix& A) const;
+  void checkSize(int e, int rows, int cols, const linalg::SparseMatrix& A) const;
 
   int dofCount_ = 0;
   ElementDofs elements_;
-  SparseMatrix pattern_;
+  linalg::SparseMatrix pattern_;
   bool taken_ = false;
   long long nonZeros_ = 0;
   std::vector<std::int64_t> positionOffsets_;

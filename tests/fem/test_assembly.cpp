@@ -42,7 +42,7 @@ TEST(AssemblyPattern, MatchesDenseAssembly) {
   std::uniform_real_distribution<double> u(-1, 1);
   Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd denseF = Eigen::VectorXd::Zero(n);
-  SparseMatrix A = pattern.newMatrix();
+  aster::linalg::SparseMatrix A = pattern.newMatrix();
   Eigen::VectorXd F = Eigen::VectorXd::Zero(n);
   for (int round = 0; round < 2; ++round) {  // re-assembly into the same values
     for (int e = 0; e < elements.elementCount(); ++e) {
@@ -83,7 +83,7 @@ TEST(AssemblyPattern, MatchesDenseAssembly) {
   EXPECT_THROW(AssemblyPattern(10, bad), aster::Error);
 
   // The pattern's own matrix, handed over: same pattern, zero values, and only once.
-  SparseMatrix taken;
+  aster::linalg::SparseMatrix taken;
   pattern.takeMatrix(taken);
   ASSERT_EQ(taken.nonZeros(), A.nonZeros());
   EXPECT_TRUE(std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), taken.innerIndexPtr()));

@@ -85,7 +85,7 @@ typename aster::mechanics::PlaneElement<T>::Coords cellCoords(const Patch& p, in
 // K(U) and f_int(U) assembled over the patch (2 DOFs per node, node-major).
 template <CellType T>
 void assemble(const Patch& p, const aster::mechanics::PlaneElement<T>& element,
-              const aster::fem::AssemblyPattern& pattern, const Eigen::VectorXd& U, aster::fem::SparseMatrix& K,
+              const aster::fem::AssemblyPattern& pattern, const Eigen::VectorXd& U, aster::linalg::SparseMatrix& K,
               Eigen::VectorXd& F) {
   using E = aster::mechanics::PlaneElement<T>;
   K = pattern.newMatrix();

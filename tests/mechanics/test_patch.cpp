@@ -43,7 +43,7 @@ void smallStrainPatch(PlaneHypothesis hypothesis) {
     if (p.boundary[n]) Up.segment<2>(2 * n) = u;
     else freeDofs.insert(freeDofs.end(), {2 * n, 2 * n + 1});
   }
-  fem::SparseMatrix K;
+  linalg::SparseMatrix K;
   Eigen::VectorXd F;
   assemble<T>(p, element, pattern, Eigen::VectorXd::Zero(map.dofCount()), K, F);
   // Free block: K_ff u_f = -K_fp u_p.
@@ -108,7 +108,7 @@ void homogeneousLargeStrainPatch(PlaneHypothesis hypothesis) {
   Fh << 1.3, 0.4, -0.2, 0.8;
   Eigen::VectorXd U(map.dofCount());
   for (int n = 0; n < nn; ++n) U.segment<2>(2 * n) = (Fh - Eigen::Matrix2d::Identity()) * p.nodes[n];
-  fem::SparseMatrix K;
+  linalg::SparseMatrix K;
   Eigen::VectorXd F;
   assemble<T>(p, element, pattern, U, K, F);
   double largest = 0;

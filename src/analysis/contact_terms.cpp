@@ -1,0 +1,663 @@
+#include "analysis/contact_terms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "contact/discrete.hpp"
+#include "contact/gap.hpp"
+#include "contact/projection.hpp"
+#include "core/error.hpp"
+#include "core/messages.hpp"
+#include "fem/quadrature.hpp"
+
+namespace aster::analysis {
+namespace {
+
+std::string sci(double v, int digits = 2) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*E", digits, v);
+  return buf;
+}
+
+// The components of CONT_NOEU (contact_terms.hpp).
+const std::vector<std::string> kContNoeu = {"CONT", "JEU", "RN", "RNX", "RNY"};
+
+// What both formulations need: current positions, segments, DOF lists, the
+// slave nodes of each zone.
+class ContactBase : public AdditionalTerms {
+ public:
+  ContactBase(const MechanicalSystem& system, std::vector<ContactZone> zones, const ContactSettings& settings)
+      : system_(system), mesh_(system.model().mesh()), zones_(std::move(zones)), settings_(settings) {
+    std::vector<char> listed(mesh_.nodeCount(), 0);
+    for (std::size_t z = 0; z < zones_.size(); ++z) {
+      const auto& zs = zones_[z].settings;
+      for (int c : zones_[z].masterCells) checkSegment(c, "master");
+      for (int c : zones_[z].slaveCells) checkSegment(c, "slave");
+      if (!(zs.outsideTolerance >= 0))
+        throw Error("contact zone " + std::to_string(z + 1) + ": TOLE_PROJ_EXT must be >= 0, got " +
+                    std::to_string(zs.outsideTolerance));
+      contact::ProjectionOptions po;
+      po.outsideTolerance = zs.outsideTolerance;
+      po.maxDistance = zs.maxDistance;
+      projections_.push_back(po);
+      std::vector<char> ex(mesh_.nodeCount(), 0);
+      for (int n : zs.excludedNodes) {
+        if (n < 0 || n >= mesh_.nodeCount()) throw Error("contact: excluded node index out of range");
+        ex[n] = 1;
+      }
+      excluded_.push_back(std::move(ex));
+      for (int c : zones_[z].slaveCells)
+        for (int n : mesh_.cellNodes(c))
+          if (!listed[n]) {
+            listed[n] = 1;
+            slaveNodes_.push_back({n, static_cast<int>(z)});
+          }
+      scales_.push_back(stiffnessScale(zones_[z]));
+    }
+  }
+  void setFirstUnknown(int first) override { first_ = first; }
+
+ protected:
+  struct ZoneNode {
+    int node;
+    int zone;
+  };
+
+  // S of a zone (contact_terms.hpp): the largest Young's modulus of the model's
+  // 2D cells with a node on its slave or master cells, else of all the model's
+  // cells, else 1.
+  double stiffnessScale(const ContactZone& zone) const {
+    const auto& materials = system_.problem().materials;
+    if (!materials) return 1.0;
+    std::vector<char> onZone(mesh_.nodeCount(), 0);
+    for (const auto* cells : {&zone.slaveCells, &zone.masterCells})
+      for (int c : *cells)
+        for (int n : mesh_.cellNodes(c)) onZone[n] = 1;
+    double near = 0, all = 0;
+    for (int c : system_.model().cells()) {
+      const model::ElasticMaterial* m = materials->at(c);
+      if (!m || !(m->E > 0) || !std::isfinite(m->E)) continue;
+      all = std::max(all, m->E);
+      for (int n : mesh_.cellNodes(c))
+        if (onZone[n]) {
+          near = std::max(near, m->E);
+          break;
+        }
+    }
+    return near > 0 ? near : all > 0 ? all : 1.0;
+  }
+  void checkSegment(int c, const char* role) const {
+    const auto t = mesh_.cellType(c);
+    if (t != mesh::CellType::SEG2 && t != mesh::CellType::SEG3)
+      throw Error(std::string("contact ") + role + " cell " + mesh_.cellName(c) + " is a " + mesh::cellTypeName(t) +
+                  "; contact surfaces are made of SEG2 or SEG3");
+  }
+  Eigen::Vector2d position(int node, const Eigen::VectorXd* U) const {
+    const Eigen::Vector3d X = mesh_.node(node);
+    Eigen::Vector2d x(X(0), X(1));
+    if (U)
+      for (int k = 0; k < 2; ++k) {
+        const int d = system_.dof(node, k);
+        if (d >= 0) x(k) += (*U)(d);
+      }
+    return x;
+  }
+  contact::Segment segment(int cell, const Eigen::VectorXd* U) const {
+    const auto n = mesh_.cellNodes(cell);
+    if (mesh_.cellType(cell) == mesh::CellType::SEG3)
+      return contact::Segment::seg3(position(n[0], U), position(n[1], U), position(n[2], U));
+    return contact::Segment::seg2(position(n[0], U), position(n[1], U));
+  }
+  void appendDofs(int cell, std::vector<int>& dofs) const {
+    for (int n : mesh_.cellNodes(cell)) {
+      dofs.push_back(system_.dof(n, 0));
+      dofs.push_back(system_.dof(n, 1));
+    }
+  }
+  std::vector<contact::Segment> masters(const ContactZone& z, const Eigen::VectorXd& U) const {
+    std::vector<contact::Segment> out;
+    for (int c : z.masterCells) out.push_back(segment(c, &U));
+    return out;
+  }
+  static void addLocal(const std::vector<int>& dofs, const Eigen::VectorXd& res, Eigen::VectorXd& r) {
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      if (dofs[i] >= 0) r(dofs[i]) += res(static_cast<Eigen::Index>(i));
+  }
+  // int_cell f(a, xi) dGamma_0 for each local node a, added to out[a] (reference configuration).
+  template <class F>
+  void integrateOnSlave(int cell, F&& f, double* out) const {
+    const contact::Segment s = segment(cell, nullptr);
+    const auto& q = fem::gaussLegendre(6);
+    for (int i = 0; i < q.size(); ++i) {
+      const double xi = q.points[i](0);
+      const auto sh = contact::segmentShape(s.type, xi);
+      const double J = (s.x.transpose() * sh.dN).norm();
+      for (int a = 0; a < 3; ++a) out[a] += q.weights[i] * J * f(a, xi);
+    }
+  }
+  // The reaction of the terms at the slave nodes: RNX, RNY of CONT_NOEU.
+  void nodalForces(const Eigen::VectorXd& r, mesh::NodalField& f) const {
+    for (const auto& sn : slaveNodes_)
+      for (int k = 0; k < 2; ++k) {
+        const int d = system_.dof(sn.node, k);
+        if (d >= 0) f.values[5 * sn.node + 3 + k] = 0.0 - r(d);  // no -0
+      }
+  }
+  void printNodalTable(const mesh::NodalField& f) const {
+    if (settings_.info < 2) return;
+    std::string text = "DEFI_CONTACT (INFO=2): contact at the converged instant (CONT_NOEU)\n"
+                       "    node          CONT   JEU          RN           RNX          RNY";
+    for (const auto& sn : slaveNodes_) {
+      char line[160];
+      const double* v = &f.values[5 * sn.node];
+      std::snprintf(line, sizeof line, "\n    %-12s  %d   %12.5E %12.5E %12.5E %12.5E", mesh_.nodeName(sn.node).c_str(),
+                    static_cast<int>(v[0]), v[1], v[2], v[3], v[4]);
+      text += line;
+    }
+    Messages::info(text);
+  }
+
+  const MechanicalSystem& system_;
+  const mesh::Mesh& mesh_;
+  std::vector<ContactZone> zones_;
+  ContactSettings settings_;
+  std::vector<contact::ProjectionOptions> projections_;  // per zone
+  std::vector<std::vector<char>> excluded_;              // per zone, per mesh node
+  std::vector<ZoneNode> slaveNodes_;                     // each slave node once (its first zone)
+  std::vector<double> scales_;                           // per zone: S (multiplier = S * unknown)
+  int first_ = 0;
+};
+
+// ---------------------------------------------------------------- DISCRETE
+class DiscreteContact final : public ContactBase {
+ public:
+  DiscreteContact(const MechanicalSystem& system, std::vector<ContactZone> zones, const ContactSettings& settings)
+      : ContactBase(system, std::move(zones), settings) {
+    for (std::size_t z = 0; z < zones_.size(); ++z) {
+      std::vector<double> share(mesh_.nodeCount(), 0.0);
+      for (int c : zones_[z].slaveCells) {
+        double a[3] = {0, 0, 0};
+        const auto type = segment(c, nullptr).type;
+        integrateOnSlave(c, [&](int k, double xi) { return contact::segmentShape(type, xi).N(k); }, a);
+        const auto n = mesh_.cellNodes(c);
+        for (int k = 0; k < static_cast<int>(n.size()); ++k) share[n[k]] += a[k];
+      }
+      std::vector<char> seen(mesh_.nodeCount(), 0);
+      for (int c : zones_[z].slaveCells)
+        for (int n : mesh_.cellNodes(c))
+          if (!seen[n] && !excluded_[z][n]) {
+            seen[n] = 1;
+            if (!(share[n] > 0))
+              throw Error("contact: slave node " + mesh_.nodeName(n) + " has no share of the slave length");
+            nodes_.push_back({n, static_cast<int>(z), -1, contact::Projection{}, share[n]});
+          }
+    }
+    active_.assign(nodes_.size(), false);
+  }
+  int unknownCount() const override { return static_cast<int>(nodes_.size()); }
+
+  bool update(const Eigen::VectorXd& U) override {
+    bool changed = false;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      auto& sn = nodes_[i];
+      const auto m = masters(zones_[sn.zone], U);
+      const auto p = contact::projectOnMaster(position(sn.node, &U), m, projections_[sn.zone]);
+      changed |= p.segment != sn.segment;
+      sn.segment = p.segment;
+      sn.projection = p.projection;
+      // As code_aster's CONTACT_INIT='INTERPENETRE': nodes touching (to
+      // round-off) or penetrating at the start are active from the first iteration.
+      if (!started_ && p.paired() && contact::gapIsClosed(p.projection.gap, position(sn.node, &U), m[p.segment]))
+        active_[i] = true;
+    }
+    started_ = true;
+    return changed;
+  }
+
+  void elementDofs(fem::ElementDofs& out) const override {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) out.add(nodeDofs(i));
+  }
+
+  void assemble(const Eigen::VectorXd& U, Eigen::VectorXd& r, const fem::AssemblyPattern& pattern, int firstElement,
+                linalg::SparseMatrix* K) const override {
+    residual_ = 0;
+    Eigen::VectorXd res;
+    Eigen::MatrixXd Ke;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      const auto dofs = nodeDofs(i);
+      double violation = 0;
+      nodeTerms(i, U, res, Ke, violation);
+      residual_ = std::max(residual_, violation);
+      addLocal(dofs, res, r);
+      if (K) pattern.addMatrix(firstElement + static_cast<int>(i), Ke.data(), K->valuePtr());
+    }
+  }
+
+  bool updateStatus(const Eigen::VectorXd& U) override {
+    std::vector<double> gaps(nodes_.size(), 1.0), lambdas(nodes_.size(), 0.0);
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      const auto& sn = nodes_[i];
+      lambdas[i] = multiplier(i, U);
+      const auto p =
+          contact::projectOnMaster(position(sn.node, &U), masters(zones_[sn.zone], U), projections_[sn.zone]);
+      gaps[i] = p.paired() ? p.projection.gap : 1.0;
+    }
+    return contact::updateActiveSet(gaps, lambdas, active_).changed();
+  }
+
+  std::string statusText() const override {
+    return std::to_string(std::count(active_.begin(), active_.end(), true)) + " active nodes, residual " +
+           sci(residual_);
+  }
+  void saveStatus() override { saved_ = active_; }
+  void restoreStatus() override { active_ = saved_; }
+
+  void outputFields(const Eigen::VectorXd& U, std::vector<mesh::NodalField>& fields) const override {
+    mesh::NodalField f{"CONT_NOEU", kContNoeu, std::vector<double>(kContNoeu.size() * mesh_.nodeCount(), 0.0)};
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(U.size()), res;
+    Eigen::MatrixXd Ke;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      double violation = 0;
+      nodeTerms(i, U, res, Ke, violation);
+      addLocal(nodeDofs(i), res, r);
+    }
+    // JEU on every slave node, excluded ones too; the rest on the nodes with a multiplier.
+    for (const auto& sn : slaveNodes_) {
+      const auto p = contact::projectOnMaster(position(sn.node, &U), masters(zones_[sn.zone], U), projections_[sn.zone]);
+      f.values[5 * sn.node + 1] = p.paired() ? p.projection.gap : 0.0;
+    }
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      const int n = nodes_[i].node;
+      f.values[5 * n] = active_[i] ? 1.0 : 0.0;
+      f.values[5 * n + 2] = multiplier(i, U) / nodes_[i].share;
+    }
+    nodalForces(r, f);
+    printNodalTable(f);
+    fields.push_back(std::move(f));
+  }
+
+ private:
+  struct SlaveNode {
+    int node;
+    int zone;
+    int segment;  // index in the zone's master cells, -1 when unpaired
+    contact::Projection projection;
+    double share;  // int N_i dGamma_0 over the zone's slave cells
+  };
+  std::vector<int> nodeDofs(std::size_t i) const {
+    const auto& sn = nodes_[i];
+    std::vector<int> dofs = {system_.dof(sn.node, 0), system_.dof(sn.node, 1)};
+    if (sn.segment >= 0) appendDofs(zones_[sn.zone].masterCells[sn.segment], dofs);
+    dofs.push_back(first_ + static_cast<int>(i));
+    return dofs;
+  }
+  // Node i's multiplier lambda (its unknown is lambda / S).
+  double multiplier(std::size_t i, const Eigen::VectorXd& U) const {
+    return scales_[nodes_[i].zone] * U(first_ + static_cast<int>(i));
+  }
+  // Residual and tangent of node i (layout of nodeDofs), with respect to its
+  // unknown lambda / S and its equation times S (contact_terms.hpp), and the
+  // violation of its contact condition in length units (statusText()).
+  void nodeTerms(std::size_t i, const Eigen::VectorXd& U, Eigen::VectorXd& res, Eigen::MatrixXd& Ke,
+                 double& violation) const {
+    const auto& sn = nodes_[i];
+    const int m = static_cast<int>(nodeDofs(i).size());
+    const double S = scales_[sn.zone];
+    const double lambda = multiplier(i, U);
+    res.setZero(m);
+    Ke.setZero(m, m);
+    violation = 0;
+    if (sn.segment >= 0) {
+      const auto seg = segment(zones_[sn.zone].masterCells[sn.segment], &U);
+      const auto gap = contact::linearizeGap(position(sn.node, &U), seg, sn.projection);
+      const double k = zones_[sn.zone].settings.penalty * sn.share;
+      const auto t = contact::discreteNodeTerms(gap, lambda, active_[i], k);
+      const int q = m - 1;
+      res.head(q) = t.residualU.head(q);
+      Ke.topLeftCorner(q, q) = t.tangentUU.topLeftCorner(q, q);
+      if (active_[i]) {
+        res(q) = S * t.residualLambda;
+        Ke.col(q).head(q) = S * t.tangentULambda.head(q);
+        Ke.row(q).head(q) = S * t.tangentULambda.head(q).transpose();
+        Ke(q, q) = S * S * t.tangentLambdaLambda;
+      } else {
+        res(q) = t.residualLambda;  // lambda = 0, i.e. S * unknown = 0
+        Ke(q, q) = S * t.tangentLambdaLambda;
+      }
+      violation = active_[i] ? std::fabs(t.residualLambda) : std::max(0.0, -gap.gap);
+    } else {
+      res(m - 1) = lambda;  // unpaired: lambda = 0
+      Ke(m - 1, m - 1) = S;
+    }
+  }
+  std::vector<SlaveNode> nodes_;
+  std::vector<bool> active_, saved_;
+  bool started_ = false;
+  mutable double residual_ = 0;
+};
+
+// ---------------------------------------------------------------- CONTINUE
+class ContinueContact final : public ContactBase {
+ public:
+  ContinueContact(const MechanicalSystem& system, std::vector<ContactZone> zones, const ContactSettings& settings)
+      : ContactBase(system, std::move(zones), settings) {
+    std::map<int, int> lagsIndex;
+    for (std::size_t z = 0; z < zones_.size(); ++z) {
+      const auto& zs = zones_[z].settings;
+      contact::ContinueOptions o;
+      o.rho = zs.rho * scales_[z];  // COEF_CONT is relative to Young's modulus
+      o.penalty = zs.penalty;
+      o.integration = zs.integration;
+      o.gaussPoints = zs.gaussPoints;
+      o.projection = projections_[z];
+      o.multiplierInterpolation = zs.multipliers;
+      options_.push_back(o);
+      const bool quadratic = zs.multipliers == contact::MultiplierInterpolation::Quadratic;
+      for (int c : zones_[z].slaveCells) {
+        const auto n = mesh_.cellNodes(c);
+        const bool seg3 = mesh_.cellType(c) == mesh::CellType::SEG3;
+        SlaveCell sc{c, static_cast<int>(z), 2, {}, {}, true};
+        if (quadratic && seg3) sc.count = 3;
+        double a[3] = {0, 0, 0};
+        integrateOnSlave(
+            c,
+            [&](int v, double xi) {
+              if (sc.count == 3) return contact::segmentShape(fem::CellType::SEG3, xi).N(v);
+              return v == 0 ? 0.5 * (1 - xi) : v == 1 ? 0.5 * (1 + xi) : 0.0;
+            },
+            a);
+        for (int v = 0; v < sc.count; ++v) {
+          auto it = lagsIndex.find(n[v]);
+          if (it == lagsIndex.end()) {
+            it = lagsIndex.emplace(n[v], static_cast<int>(lagsNodes_.size())).first;
+            lagsNodes_.push_back(n[v]);
+            lagsShare_.push_back(0.0);
+            lagsScale_.push_back(scales_[z]);
+            if (excluded_[z][n[v]]) fixedLags_.push_back(it->second);
+          }
+          sc.lags[v] = it->second;
+          lagsShare_[it->second] += a[v];
+          sc.skip = sc.skip && excluded_[z][n[v]];
+        }
+        cells_.push_back(sc);
+      }
+    }
+    lagsResidual_.assign(lagsNodes_.size(), 0.0);
+    fixed_.assign(lagsNodes_.size(), 0);
+    for (int k : fixedLags_) fixed_[k] = 1;
+    // Where a slave node reads its pressure: its own LAGS_C, or the mean of
+    // the ends of a SEG3 whose middle node carries none.
+    pressureOf_.assign(mesh_.nodeCount(), {-1, -1});
+    for (const auto& sc : cells_) {
+      const auto n = mesh_.cellNodes(sc.cell);
+      for (int v = 0; v < sc.count; ++v) pressureOf_[n[v]] = {sc.lags[v], sc.lags[v]};
+    }
+    for (const auto& sc : cells_) {
+      const auto n = mesh_.cellNodes(sc.cell);
+      if (sc.count == 2 && n.size() == 3 && pressureOf_[n[2]].first < 0) pressureOf_[n[2]] = {sc.lags[0], sc.lags[1]};
+    }
+  }
+  int unknownCount() const override { return static_cast<int>(lagsNodes_.size()); }
+  void fixedUnknowns(std::vector<int>& dofs) const override {
+    for (int k : fixedLags_) dofs.push_back(first_ + k);
+  }
+
+  // Candidate masters of a slave cell: the segments its nodes and midpoints
+  // project on (the nearest one when none is paired).
+  bool update(const Eigen::VectorXd& U) override {
+    initialIteration_ = !started_;
+    started_ = true;
+    bool changed = false;
+    for (auto& sc : cells_) {
+      if (sc.skip) continue;
+      const auto& zone = zones_[sc.zone];
+      const auto& po = projections_[sc.zone];
+      const auto m = masters(zone, U);
+      const auto slave = segment(sc.cell, &U);
+      std::vector<int> cand;
+      double nearest = 1e300;
+      int nearestSeg = 0;
+      for (int k = 0; k <= 8; ++k) {
+        const double xi = -1.0 + k / 4.0;
+        const auto sh = contact::segmentShape(slave.type, xi);
+        const Eigen::Vector2d x = slave.x.transpose() * sh.N;
+        const auto p = contact::projectOnMaster(x, m, po);
+        if (p.paired()) {
+          cand.push_back(p.segment);
+        } else {
+          for (std::size_t s = 0; s < m.size(); ++s) {
+            const auto q = contact::projectOnSegment(x, m[s], po);
+            if (q.distance < nearest) {
+              nearest = q.distance;
+              nearestSeg = static_cast<int>(s);
+            }
+          }
+        }
+      }
+      if (cand.empty()) cand.push_back(nearestSeg);
+      std::sort(cand.begin(), cand.end());
+      cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+      changed |= cand != sc.candidates;
+      sc.candidates = cand;
+    }
+    return changed;
+  }
+
+  void elementDofs(fem::ElementDofs& out) const override {
+    for (const auto& sc : cells_)
+      if (!sc.skip) out.add(cellDofs(sc));
+  }
+
+  void assemble(const Eigen::VectorXd& U, Eigen::VectorXd& r, const fem::AssemblyPattern& pattern, int firstElement,
+                linalg::SparseMatrix* K) const override {
+    pointsInContact_ = 0;
+    std::fill(lagsResidual_.begin(), lagsResidual_.end(), 0.0);
+    int e = 0;
+    for (const auto& sc : cells_) {
+      if (sc.skip) continue;
+      cellTerms(sc, U, initialIteration_);
+      for (const auto& p : terms_.points) pointsInContact_ += p.status == contact::PointStatus::Contact;
+      for (int v = 0; v < sc.count; ++v) lagsResidual_[sc.lags[v]] += terms_.residual(terms_.lagrangeOffset + v);
+      scaleMultiplierRows(sc);
+      addLocal(cellDofs(sc), terms_.residual, r);
+      if (K) pattern.addMatrix(firstElement + e, terms_.tangent.data(), K->valuePtr());
+      ++e;
+    }
+    residual_ = 0;
+    for (std::size_t k = 0; k < lagsNodes_.size(); ++k)
+      if (!fixed_[k]) residual_ = std::max(residual_, std::fabs(lagsResidual_[k]) / lagsShare_[k]);
+    nodesInContact_ = 0;
+    const auto states = nodalStates(U, initialIteration_);
+    for (const auto& s : states) nodesInContact_ += s.contact;
+  }
+
+  // The statuses are re-evaluated at every assembly (generalized Newton): a
+  // small residual already means they are consistent.
+  bool updateStatus(const Eigen::VectorXd&) override { return false; }
+  std::string statusText() const override {
+    return std::to_string(pointsInContact_) + " points in contact, " + std::to_string(nodesInContact_) +
+           " nodes, residual " + sci(residual_);
+  }
+  // CONTACT_INIT applies again when the first step is cut and restarted.
+  void saveStatus() override { savedStarted_ = started_; }
+  void restoreStatus() override { started_ = savedStarted_; }
+
+  // LAGS_C joins DEPL at its nodes; the middle node of a SEG3 slave whose
+  // LAGS_C is linear shows the value of the linear pressure there.
+  void extendDisplacement(const Eigen::VectorXd& U, mesh::NodalField& depl) const override {
+    const int nc = static_cast<int>(depl.components.size());
+    std::vector<double> values(static_cast<std::size_t>(nc + 1) * mesh_.nodeCount(), 0.0);
+    for (int n = 0; n < mesh_.nodeCount(); ++n)
+      for (int c = 0; c < nc; ++c) values[n * (nc + 1) + c] = depl.values[n * nc + c];
+    for (const auto& sc : cells_) {
+      const auto nodes = mesh_.cellNodes(sc.cell);
+      if (sc.count == 2 && nodes.size() == 3)
+        values[nodes[2] * (nc + 1) + nc] = 0.5 * (lags(sc.lags[0], U) + lags(sc.lags[1], U));
+    }
+    for (std::size_t k = 0; k < lagsNodes_.size(); ++k)
+      values[lagsNodes_[k] * (nc + 1) + nc] = lags(static_cast<int>(k), U);
+    depl.components.push_back("LAGS_C");
+    depl.values = std::move(values);
+  }
+
+  void outputFields(const Eigen::VectorXd& U, std::vector<mesh::NodalField>& fields) const override {
+    mesh::NodalField f{"CONT_NOEU", kContNoeu, std::vector<double>(kContNoeu.size() * mesh_.nodeCount(), 0.0)};
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(U.size());
+    for (const auto& sc : cells_) {
+      if (sc.skip) continue;
+      cellTerms(sc, U, false);
+      addLocal(cellDofs(sc), terms_.residual, r);
+    }
+    const auto states = nodalStates(U, false);
+    for (std::size_t i = 0; i < slaveNodes_.size(); ++i) {
+      const int n = slaveNodes_[i].node;
+      f.values[5 * n] = states[i].contact ? 1.0 : 0.0;
+      f.values[5 * n + 1] = states[i].gap;
+      f.values[5 * n + 2] = states[i].pressure;
+    }
+    nodalForces(r, f);
+    printNodalTable(f);
+    fields.push_back(std::move(f));
+  }
+
+ private:
+  struct SlaveCell {
+    int cell;
+    int zone;
+    int count;    // LAGS_C unknowns of the cell: 2 (vertices) or 3 (quadratic SEG3)
+    int lags[3];  // their indices among this term's unknowns
+    std::vector<int> candidates;
+    bool skip;  // every LAGS_C node excluded (SANS_GROUP_NO): no contact on the cell
+  };
+  struct NodalState {
+    bool contact = false;
+    double gap = 0, pressure = 0;
+  };
+  std::vector<int> cellDofs(const SlaveCell& sc) const {
+    std::vector<int> dofs;
+    appendDofs(sc.cell, dofs);
+    for (int s : sc.candidates) appendDofs(zones_[sc.zone].masterCells[s], dofs);
+    for (int v = 0; v < sc.count; ++v) dofs.push_back(first_ + sc.lags[v]);
+    return dofs;
+  }
+  // LAGS_C of unknown k (stored as LAGS_C / S).
+  double lags(int k, const Eigen::VectorXd& U) const { return lagsScale_[k] * U(first_ + k); }
+  // terms_ (of cell sc) with respect to the unknowns LAGS_C / S, their equations times S.
+  void scaleMultiplierRows(const SlaveCell& sc) const {
+    const int lo = terms_.lagrangeOffset;
+    for (int v = 0; v < sc.count; ++v) {
+      const double S = lagsScale_[sc.lags[v]];
+      terms_.residual(lo + v) *= S;
+      terms_.tangent.row(lo + v) *= S;
+      terms_.tangent.col(lo + v) *= S;
+    }
+  }
+  contact::ForcedStatus forced(int zone, bool initial) const {
+    return initial ? zones_[zone].settings.initialStatus : contact::ForcedStatus::None;
+  }
+  // terms_ of one cell at U (statuses forced by CONTACT_INIT when `initial`).
+  void cellTerms(const SlaveCell& sc, const Eigen::VectorXd& U, bool initial) const {
+    contact::SlaveCell slave;
+    const bool seg3 = mesh_.cellType(sc.cell) == mesh::CellType::SEG3;
+    slave.type = seg3 ? fem::CellType::SEG3 : fem::CellType::SEG2;
+    const auto nodes = mesh_.cellNodes(sc.cell);
+    for (int a = 0; a < static_cast<int>(nodes.size()); ++a) {
+      slave.reference.row(a) = position(nodes[a], nullptr).transpose();
+      slave.current.row(a) = position(nodes[a], &U).transpose();
+    }
+    for (int v = 0; v < sc.count; ++v) slave.lagsC(v) = lags(sc.lags[v], U);
+    std::vector<contact::Segment> m;
+    for (int s : sc.candidates) m.push_back(segment(zones_[sc.zone].masterCells[s], &U));
+    contact::ContinueOptions o = options_[sc.zone];
+    o.forcedStatus = forced(sc.zone, initial);
+    contact::continueCellTerms(slave, m, o, terms_);
+  }
+  // Per slave node (slaveNodes_ order): the criterion of the integration
+  // points evaluated at the node, its gap and its pressure.
+  std::vector<NodalState> nodalStates(const Eigen::VectorXd& U, bool initial) const {
+    std::vector<NodalState> out(slaveNodes_.size());
+    std::vector<std::vector<contact::Segment>> m(zones_.size());
+    for (std::size_t z = 0; z < zones_.size(); ++z) m[z] = masters(zones_[z], U);
+    for (std::size_t i = 0; i < slaveNodes_.size(); ++i) {
+      const auto& sn = slaveNodes_[i];
+      auto& s = out[i];
+      const auto [a, b] = pressureOf_[sn.node];
+      if (a >= 0) s.pressure = 0.5 * (lags(a, U) + lags(b, U));
+      const auto p = contact::projectOnMaster(position(sn.node, &U), m[sn.zone], projections_[sn.zone]);
+      if (!p.paired() || excluded_[sn.zone][sn.node]) {
+        s.gap = p.paired() ? p.projection.gap : 0.0;
+        continue;
+      }
+      s.gap = p.projection.gap;
+      // A gap within round-off is closed, as at the integration points.
+      const double g =
+          s.gap > 0 && contact::gapIsClosed(s.gap, position(sn.node, &U), m[sn.zone][p.segment]) ? 0.0 : s.gap;
+      const auto& o = options_[sn.zone];
+      const auto f = forced(sn.zone, initial);
+      if (f != contact::ForcedStatus::None)
+        s.contact = f == contact::ForcedStatus::Contact;
+      else
+        s.contact = (o.penalty > 0 ? o.penalty * g : s.pressure + o.rho * g) <= 0;
+    }
+    return out;
+  }
+
+  std::vector<contact::ContinueOptions> options_;  // per zone
+  std::vector<SlaveCell> cells_;
+  std::vector<int> lagsNodes_;
+  std::vector<double> lagsShare_;  // int L_v dGamma_0
+  std::vector<double> lagsScale_;  // S of the zone that made each LAGS_C unknown
+  std::vector<int> fixedLags_;     // LAGS_C of excluded nodes: 0
+  std::vector<char> fixed_;
+  std::vector<std::pair<int, int>> pressureOf_;  // per mesh node: LAGS_C indices to average (-1: none)
+  bool started_ = false, savedStarted_ = false, initialIteration_ = false;
+  mutable contact::ContinueCellTerms terms_;
+  mutable std::vector<double> lagsResidual_;
+  mutable int pointsInContact_ = 0, nodesInContact_ = 0;
+  mutable double residual_ = 0;
+};
+
+}  // namespace
+
+std::pair<int, int> inwardContactCell(const mesh::Mesh& mesh, const std::vector<int>& cells) {
+  // Directed vertex edges of the 2D cells: a segment a -> b bounding a cell
+  // whose (counterclockwise) vertex cycle goes a -> b has its normal (dy, -dx) outward.
+  std::map<std::pair<int, int>, std::vector<int>> cellsOnEdge;
+  for (int c = 0; c < mesh.cellCount(); ++c) {
+    const auto t = mesh.cellType(c);
+    if (mesh::topologicalDimension(t) != 2) continue;
+    const int nv = mesh::vertexCount(t);
+    const auto n = mesh.cellNodes(c);
+    for (int i = 0; i < nv; ++i) cellsOnEdge[std::minmax(n[i], n[(i + 1) % nv])].push_back(c);
+  }
+  for (int s : cells) {
+    const auto sn = mesh.cellNodes(s);
+    if (sn.size() < 2) continue;
+    const int a = sn[0], b = sn[1];
+    const auto it = cellsOnEdge.find(std::minmax(a, b));
+    if (it == cellsOnEdge.end() || it->second.size() != 1) continue;
+    const int c = it->second[0];
+    const int nv = mesh::vertexCount(mesh.cellType(c));
+    const auto n = mesh.cellNodes(c);
+    bool sameWay = false;
+    double area = 0;
+    for (int i = 0; i < nv; ++i) {
+      if (n[i] == a && n[(i + 1) % nv] == b) sameWay = true;
+      const auto p = mesh.node(n[i]), q = mesh.node(n[(i + 1) % nv]);
+      area += p[0] * q[1] - q[0] * p[1];
+    }
+    if (sameWay != (area > 0)) return {s, c};
+  }
+  return {-1, -1};
+}
+
+std::unique_ptr<AdditionalTerms> makeContactTerms(const MechanicalSystem& system, std::vector<ContactZone> zones,
+                                                  const ContactSettings& settings) {
+  if (settings.continueFormulation) return std::make_unique<ContinueContact>(system, std::move(zones), settings);
+  return std::make_unique<DiscreteContact>(system, std::move(zones), settings);
+}
+
+}  // namespace aster::analysis

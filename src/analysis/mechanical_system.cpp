@@ -1,0 +1,377 @@
+#include "analysis/mechanical_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <map>
+#include <tuple>
+
+#include "core/error.hpp"
+#include "expr/expression.hpp"
+#include "fem/mesh_cell_type.hpp"
+#include "mechanics/loads.hpp"
+#include "mesh/cell_type.hpp"
+
+namespace aster::analysis {
+namespace {
+
+
+mechanics::PlaneHypothesis hypothesisOf(model::Modelisation m) {
+  return m == model::Modelisation::PlaneStrain ? mechanics::PlaneHypothesis::PlaneStrain
+                                               : mechanics::PlaneHypothesis::PlaneStress;
+}
+
+constexpr int kMaxNodes = 9;
+// From this many cells on, the element kernels run on every thread, colour by colour.
+constexpr std::size_t kParallelCells = 4096;
+
+// A load value at a point, or an aster::Error naming the load, the point and the
+// instant when the function is not a finite number there (NaN, infinity).
+double loadValue(const model::SpaceFunction& f, const char* load, const char* component,
+                 const std::string& where, double x, double y, double z, double t) {
+  if (f.isConstant()) return f(x, y, z, t);
+  try {
+    return f.checked(x, y, z, t);
+  } catch (const Error& e) {
+    throw Error(std::string(load) + " " + component + where + " at X = " + expr::numberText(x) +
+                ", Y = " + expr::numberText(y) + ", INST = " + expr::numberText(t) + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+double AppliedLoad::factor(double t) const {
+  if (!multiplier) return 1.0;
+  const double v = multiplier->evaluate(&t);
+  if (std::isfinite(v)) return v;
+  std::string why = "the function returns " + expr::numberText(v);
+  if (const auto* e = dynamic_cast<const expr::Expression*>(multiplier.get())) {
+    try {
+      e->evaluateChecked(&t);
+    } catch (const Error& failure) {
+      why = failure.what();
+    }
+  }
+  throw Error("FONC_MULT at INST = " + expr::numberText(t) + ": " + why);
+}
+
+MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::move(problem)) {
+  const model::Model& m = *problem_.model;
+  const mesh::Mesh& mesh = m.mesh();
+  std::vector<int> perNode(mesh.nodeCount(), 0);
+  for (int n = 0; n < mesh.nodeCount(); ++n) perNode[n] = m.nodeInModel(n) ? 2 : 0;
+  dofs_ = fem::DofMap(perNode);
+  if (problem_.kinematics.size() != m.cells().size())
+    throw Error("internal error: one kinematics per cell of the model is expected");
+
+  // One kernel per (type, material, modelisation, kinematics).
+  std::map<std::tuple<int, const model::ElasticMaterial*, int, int>, const mechanics::ElementKernel*> cache;
+  for (std::size_t k = 0; k < m.cells().size(); ++k) {
+    const int c = m.cells()[k];
+    const model::ElasticMaterial* mat = problem_.materials ? problem_.materials->at(c) : nullptr;
+    if (!mat)
+      throw Error("cell " + mesh.cellName(c) + " of the model has no material (AFFE_MATERIAU covers it?)");
+    const auto key = std::make_tuple(static_cast<int>(mesh.cellType(c)), mat,
+                                     static_cast<int>(m.modelisation(k)), static_cast<int>(problem_.kinematics[k]));
+    auto it = cache.find(key);
+    if (it == cache.end()) {
+      kernels_.push_back(mechanics::makePlaneKernel(mesh.cellType(c),
+                                         mechanics::PlaneElasticity(mat->E, mat->NU, hypothesisOf(m.modelisation(k))),
+                                         problem_.kinematics[k]));
+      it = cache.emplace(key, kernels_.back().get()).first;
+    }
+    std::vector<int> d;
+    for (int n : mesh.cellNodes(c)) {
+      d.push_back(dofs_.dof(n, 0));
+      d.push_back(dofs_.dof(n, 1));
+    }
+    cells_.push_back({c, it->second, elements_.add(d)});
+  }
+  if (cells_.size() >= kParallelCells) {
+    fem::ElementDofs chunkDofs;
+    std::vector<int> d;
+    for (std::size_t first = 0; first < cells_.size(); first += kChunkCells) {
+      d.clear();
+      for (std::size_t c = first; c < std::min(cells_.size(), first + kChunkCells); ++c) {
+        const int* cellDofs = elements_.dofs(cells_[c].element);
+        d.insert(d.end(), cellDofs, cellDofs + elements_.size(cells_[c].element));
+      }
+      chunkDofs.add(d);
+    }
+    try {
+      chunkColours_ = fem::colourElements(chunkDofs, dofCount());
+    } catch (const Error&) {
+      chunkColours_.clear();  // more than 64 colours (a node in very many chunks): serial assembly
+    }
+  }
+  for (const auto& applied : problem_.loads) {
+    if (!applied.follower) continue;
+    for (const auto& p : applied.load->pressures)
+      for (int c : p.cells) {
+        std::vector<int> d;
+        for (int n : mesh.cellNodes(c)) {
+          d.push_back(dofs_.dof(n, 0));
+          d.push_back(dofs_.dof(n, 1));
+        }
+        pressureEdges_.push_back({c, elements_.add(d), &p.p, &applied});
+      }
+  }
+  // Dead loads that do not depend on time are integrated once.
+  for (const auto& applied : problem_.loads) {
+    bool timeDependent = false;
+    for (const auto& f : applied.load->edgeForces) timeDependent |= f.fx.dependsOnTime() || f.fy.dependsOnTime();
+    for (const auto& f : applied.load->bodyForces) timeDependent |= f.fx.dependsOnTime() || f.fy.dependsOnTime();
+    for (const auto& f : applied.load->nodalForces) timeDependent |= f.fx.dependsOnTime() || f.fy.dependsOnTime();
+    if (!applied.follower)
+      for (const auto& p : applied.load->pressures) timeDependent |= p.p.dependsOnTime();
+    constantDeadLoads_.push_back(timeDependent ? Eigen::VectorXd() : deadLoadVector(applied, 0.0));
+  }
+}
+
+void MechanicalSystem::gatherCoords(int meshCell, double* X) const {
+  const mesh::Mesh& mesh = problem_.model->mesh();
+  const auto nodes = mesh.cellNodes(meshCell);
+  const int n = nodes.size();
+  for (int a = 0; a < n; ++a) {
+    const double* x = mesh.coordinates().data() + 3 * nodes[a];
+    X[a] = x[0];
+    X[n + a] = x[1];
+  }
+}
+
+Eigen::VectorXd MechanicalSystem::deadLoadVector(const AppliedLoad& applied, double t) const {
+  const model::MechanicalLoad& load = *applied.load;
+  const mesh::Mesh& mesh = problem_.model->mesh();
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(dofCount());
+  double X[2 * kMaxNodes];
+  auto scatter = [&](int cell, const double* fe) {
+    const auto nodes = mesh.cellNodes(cell);
+    for (int a = 0; a < nodes.size(); ++a) {
+      if (!dofs_.count(nodes[a])) continue;
+      F(dofs_.dof(nodes[a], 0)) += fe[2 * a];
+      F(dofs_.dof(nodes[a], 1)) += fe[2 * a + 1];
+    }
+  };
+  std::string where;
+  for (const auto& ef : load.edgeForces) {
+    auto traction = [&](const Eigen::Vector2d& p) {
+      return Eigen::Vector2d(loadValue(ef.fx, "FORCE_CONTOUR", "FX", where, p(0), p(1), 0.0, t),
+                             loadValue(ef.fy, "FORCE_CONTOUR", "FY", where, p(0), p(1), 0.0, t));
+    };
+    for (int c : ef.cells) {
+      where = " on cell " + mesh.cellName(c);
+      gatherCoords(c, X);
+      fem::dispatchEdge(fem::referenceCell(mesh.cellType(c), "loads"), [&](auto tag) {
+        constexpr fem::CellType T = decltype(tag)::value;
+        const Eigen::Map<const fem::EdgeCoords<T>> x(X);
+        const auto fe = mechanics::deadEdgeTraction<T>(x, traction);
+        scatter(c, fe.data());
+      });
+    }
+  }
+  for (const auto& bf : load.bodyForces) {
+    auto force = [&](const Eigen::Vector2d& p) {
+      return Eigen::Vector2d(loadValue(bf.fx, "FORCE_INTERNE", "FX", where, p(0), p(1), 0.0, t),
+                             loadValue(bf.fy, "FORCE_INTERNE", "FY", where, p(0), p(1), 0.0, t));
+    };
+    for (int c : bf.cells) {
+      where = " on cell " + mesh.cellName(c);
+      gatherCoords(c, X);
+      fem::dispatchSurface(fem::referenceCell(mesh.cellType(c), "loads"), [&](auto tag) {
+        constexpr fem::CellType T = decltype(tag)::value;
+        const Eigen::Map<const fem::NodeCoords<T>> x(X);
+        const auto fe = mechanics::bodyForce<T>(x, force);
+        scatter(c, fe.data());
+      });
+    }
+  }
+  // FIXE_CSTE pressures: -int p N dS on the reference edge (the follower formula at u = 0).
+  if (!applied.follower)
+    for (const auto& pr : load.pressures) {
+      auto pressure = [&](const Eigen::Vector2d& p) {
+        return loadValue(pr.p, "PRES_REP", "PRES", where, p(0), p(1), 0.0, t);
+      };
+      for (int c : pr.cells) {
+        where = " on cell " + mesh.cellName(c);
+        gatherCoords(c, X);
+        fem::dispatchEdge(fem::referenceCell(mesh.cellType(c), "loads"), [&](auto tag) {
+          constexpr fem::CellType T = decltype(tag)::value;
+          const Eigen::Map<const fem::EdgeCoords<T>> x(X);
+          mechanics::EdgeVector<T> f;
+          mechanics::followerPressure<T>(x, mechanics::EdgeVector<T>::Zero(), pressure, &f, nullptr);
+          scatter(c, f.data());
+        });
+      }
+    }
+  for (const auto& nf : load.nodalForces)
+    for (int n : nf.nodes) {
+      if (!dofs_.count(n)) continue;
+      const Eigen::Vector3d p = mesh.node(n);
+      where = " on node " + mesh.nodeName(n);
+      F(dofs_.dof(n, 0)) += loadValue(nf.fx, "FORCE_NODALE", "FX", where, p(0), p(1), p(2), t);
+      F(dofs_.dof(n, 1)) += loadValue(nf.fy, "FORCE_NODALE", "FY", where, p(0), p(1), p(2), t);
+    }
+  return F;
+}
+
+void MechanicalSystem::addDeadLoads(double t, Eigen::VectorXd& fext) const {
+  for (std::size_t i = 0; i < problem_.loads.size(); ++i) {
+    const double factor = problem_.loads[i].factor(t);
+    if (constantDeadLoads_[i].size())
+      fext += factor * constantDeadLoads_[i];
+    else
+      fext += factor * deadLoadVector(problem_.loads[i], t);
+  }
+}
+
+void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
+                                const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K) const {
+  fint.setZero(dofCount());
+  fext.setZero(dofCount());
+  // Element kernels on every thread, colour after colour (the kernels are pure functions
+  // of fixed-size arrays: no allocation, no Lua); loads below stay serial.
+  // Small models (the studies, the tests) keep the cells' order: same sums as ever.
+  double* const f = fint.data();
+  double* const values = K ? K->valuePtr() : nullptr;
+  auto element = [&](const Cell& cell, double* X, double* u, double* fe, double* Ke) {
+    gatherCoords(cell.meshCell, X);
+    const int n = cell.kernel->nodes();
+    const int* d = elements_.dofs(cell.element);
+    for (int i = 0; i < 2 * n; ++i) u[i] = U(d[i]);
+    cell.kernel->internalForce(X, u, fe, values ? Ke : nullptr);
+    for (int i = 0; i < 2 * n; ++i) f[d[i]] += fe[i];
+    if (values) pattern->addMatrix(cell.element, Ke, values);
+  };
+  const std::int64_t nonZeros = K ? K->nonZeros() : 0;
+  if (chunkColours_.empty()) {
+    std::fill(values, values + nonZeros, 0.0);
+    double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
+    try {
+      for (const Cell& cell : cells_) element(cell, X, u, fe, Ke);
+    } catch (const Error& e) {
+      throw InvalidStateError(e.what());
+    }
+  } else {
+    // A kernel may throw (an inverted cell during a diverging Newton): an
+    // exception must not leave an OpenMP region, so the first one is kept and
+    // thrown after it, for the step to be cut as in the serial case.
+    std::exception_ptr failure;
+#pragma omp parallel
+    {
+      // K's values are zeroed by both threads, in the region the colours run in.
+      constexpr std::int64_t kSlice = 1 << 16;
+#pragma omp for schedule(static)
+      for (std::int64_t first = 0; first < nonZeros; first += kSlice)
+        std::fill(values + first, values + std::min(nonZeros, first + kSlice), 0.0);
+      double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
+      const int cellCount = static_cast<int>(cells_.size());
+      for (const std::vector<int>& colour : chunkColours_) {
+        const int count = static_cast<int>(colour.size());
+#pragma omp for schedule(static)
+        for (int k = 0; k < count; ++k) {
+          try {
+            const int first = colour[k] * kChunkCells;
+            for (int c = first; c < std::min(cellCount, first + kChunkCells); ++c) element(cells_[c], X, u, fe, Ke);
+          } catch (...) {
+#pragma omp critical(aster_assembly_failure)
+            if (!failure) failure = std::current_exception();
+          }
+        }
+      }
+    }
+    if (failure) {
+      try {
+        std::rethrow_exception(failure);
+      } catch (const Error& e) {
+        throw InvalidStateError(e.what());
+      }
+    }
+  }
+  double X[2 * kMaxNodes];
+  addDeadLoads(t, fext);
+  const mesh::Mesh& mesh = problem_.model->mesh();
+  for (const Edge& e : pressureEdges_) {
+    gatherCoords(e.meshCell, X);
+    const double factor = e.load->factor(t);
+    const int* d = elements_.dofs(e.element);
+    const std::string where = " on cell " + mesh.cellName(e.meshCell);
+    auto pressure = [&](const Eigen::Vector2d& p) {
+      return factor * loadValue(*e.p, "PRES_REP", "PRES", where, p(0), p(1), 0.0, t);
+    };
+    fem::dispatchEdge(fem::referenceCell(mesh.cellType(e.meshCell), "loads"), [&](auto tag) {
+      constexpr fem::CellType T = decltype(tag)::value;
+      constexpr int nd = 2 * fem::Cell<T>::nodes;
+      const Eigen::Map<const fem::EdgeCoords<T>> x(X);
+      mechanics::EdgeVector<T> ue, f;
+      mechanics::EdgeMatrix<T> dfdu;
+      for (int i = 0; i < nd; ++i) ue(i) = U(d[i]);
+      mechanics::followerPressure<T>(x, ue, pressure, &f, K ? &dfdu : nullptr);
+      for (int i = 0; i < nd; ++i) fext(d[i]) += f(i);
+      if (K) {
+        mechanics::EdgeMatrix<T> minus = -dfdu;
+        pattern->addMatrix(e.element, minus.data(), K->valuePtr());
+      }
+    });
+  }
+}
+
+std::vector<std::pair<int, double>> MechanicalSystem::imposed(double t) const {
+  const mesh::Mesh& mesh = problem_.model->mesh();
+  std::vector<int> slot(dofCount(), -1);
+  std::vector<std::pair<int, double>> out;
+  for (const auto& applied : problem_.loads) {
+    const double factor = applied.factor(t);
+    for (const auto& im : applied.load->imposed)
+      for (int n : im.nodes) {
+        const int d = dof(n, im.component);
+        if (d < 0) throw Error("imposed displacement on node " + mesh.nodeName(n) + ", which carries no DOF");
+        const Eigen::Vector3d p = mesh.node(n);
+        const double v = factor * loadValue(im.value, "DDL_IMPO", im.component == 0 ? "DX" : "DY",
+                                            " on node " + mesh.nodeName(n), p(0), p(1), p(2), t);
+        if (slot[d] >= 0) {
+          out[slot[d]].second = v;
+        } else {
+          slot[d] = static_cast<int>(out.size());
+          out.emplace_back(d, v);
+        }
+      }
+  }
+  return out;
+}
+
+void MechanicalSystem::gaussStresses(const Eigen::VectorXd& U, std::vector<int>& offsets,
+                                     std::vector<double>& values) const {
+  offsets.assign(1, 0);
+  values.clear();
+  double X[2 * kMaxNodes], u[2 * kMaxNodes];
+  std::vector<double> s;
+  for (const Cell& cell : cells_) {
+    gatherCoords(cell.meshCell, X);
+    const int* d = elements_.dofs(cell.element);
+    for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) u[i] = U(d[i]);
+    s.resize(4 * cell.kernel->gaussPoints());
+    cell.kernel->stresses(X, u, s.data());
+    values.insert(values.end(), s.begin(), s.end());
+    offsets.push_back(static_cast<int>(values.size()));
+  }
+}
+
+void MechanicalSystem::gaussGeometry(std::vector<int>& offsets, std::vector<double>& xy,
+                                     std::vector<double>& weights) const {
+  offsets.assign(1, 0);
+  xy.clear();
+  weights.clear();
+  double X[2 * kMaxNodes];
+  for (const Cell& cell : cells_) {
+    gatherCoords(cell.meshCell, X);
+    const int q = cell.kernel->gaussPoints();
+    const std::size_t w0 = weights.size();
+    xy.resize(xy.size() + 2 * q);
+    weights.resize(w0 + q);
+    cell.kernel->gaussGeometry(X, xy.data() + 2 * w0, weights.data() + w0);
+    offsets.push_back(static_cast<int>(weights.size()));
+  }
+}
+
+}  // namespace aster::analysis

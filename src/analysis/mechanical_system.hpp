@@ -1,0 +1,121 @@
+// The discrete mechanical problem of STAT_NON_LINE without contact: DOF
+// numbering (DX, DY on each node of the model), the sparsity pattern (built
+// once), internal forces and tangent, external loads at an instant, and the
+// imposed displacements (eliminated). Contact adds its own terms on top
+// (analysis/contact_terms.hpp).
+#pragma once
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "core/error.hpp"
+#include "expr/function.hpp"
+#include "fem/assembly_pattern.hpp"
+#include "fem/dof_map.hpp"
+#include "mechanics/plane_elasticity.hpp"
+#include "model/loads.hpp"
+#include "model/material.hpp"
+#include "model/model.hpp"
+#include "mechanics/element_kernel.hpp"
+
+namespace aster::analysis {
+
+
+// An element kernel refused the state (an inverted cell after too large a
+// Newton correction): a failure that cutting the step may cure.
+class InvalidStateError : public Error {
+ public:
+  using Error::Error;
+};
+
+struct AppliedLoad {
+  const model::MechanicalLoad* load = nullptr;
+  expr::FunctionPtr multiplier;  // FONC_MULT of INST; null means 1
+  // TYPE_CHARGE='SUIV': its pressures act on the deformed edges (and enter the
+  // tangent); otherwise (FIXE_CSTE) they are dead loads on the reference edges.
+  bool follower = false;
+  // Throws aster::Error when FONC_MULT is not a finite number at t.
+  double factor(double t) const;
+};
+
+struct MechanicalProblem {
+  std::shared_ptr<const model::Model> model;
+  std::shared_ptr<const model::MaterialField> materials;
+  std::vector<AppliedLoad> loads;
+  // Per cell of model->cells(): its kinematics (COMPORTEMENT).
+  std::vector<mechanics::Kinematics> kinematics;
+};
+
+class MechanicalSystem {
+ public:
+  explicit MechanicalSystem(MechanicalProblem problem);
+
+  const fem::DofMap& dofMap() const { return dofs_; }
+  int dofCount() const { return dofs_.dofCount(); }
+  const model::Model& model() const { return *problem_.model; }
+  const MechanicalProblem& problem() const { return problem_; }
+  // DOF of (node, component), -1 when the node carries none.
+  int dof(int node, int component) const { return dofs_.count(node) ? dofs_.dof(node, component) : -1; }
+
+  // Element DOF lists of every term that has a stiffness (cells, pressure edges):
+  // the driver adds contact's and builds the pattern.
+  const fem::ElementDofs& elementDofs() const { return elements_; }
+
+  // Fint(U) and Fext(U, t) (follower pressures act on the deformed edges); when K is given,
+  // K = dFint/dU - dFext/dU (every value of K set, zero outside these terms), with K on a
+  // pattern containing elementDofs() (the first elementDofs().elementCount() elements of
+  // `pattern`).
+  void evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
+                const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K) const;
+
+  // K is exactly symmetric whatever U: every element matrix is (its kernel mirrors one
+  // triangle), and the assembly adds the same element values in the same order into (i, j)
+  // and (j, i). Only follower pressures add an unsymmetric term.
+  bool symmetricTangent() const { return pressureEdges_.empty(); }
+
+  // Imposed displacements at t: (dof, value), each DOF once (the last load wins).
+  std::vector<std::pair<int, double>> imposed(double t) const;
+
+  // SIEF_ELGA at U: per cell of the model, 4 components per Gauss point.
+  void gaussStresses(const Eigen::VectorXd& U, std::vector<int>& offsets, std::vector<double>& values) const;
+  // Gauss point positions and weights*detJ in the reference configuration.
+  void gaussGeometry(std::vector<int>& offsets, std::vector<double>& xy, std::vector<double>& weights) const;
+
+ private:
+  struct Cell {
+    int meshCell;
+    const mechanics::ElementKernel* kernel;
+    int element;  // index in elements_
+  };
+  struct Edge {  // an edge of a follower pressure
+    int meshCell;
+    int element;
+    const model::SpaceFunction* p;
+    const AppliedLoad* load;
+  };
+  void gatherCoords(int meshCell, double* X) const;
+  void addDeadLoads(double t, Eigen::VectorXd& fext) const;
+  Eigen::VectorXd deadLoadVector(const AppliedLoad& applied, double t) const;
+
+  MechanicalProblem problem_;
+  fem::DofMap dofs_;
+  fem::ElementDofs elements_;
+  std::vector<std::unique_ptr<mechanics::ElementKernel>> kernels_;
+  std::vector<Cell> cells_;
+  // Runs of kChunkCells consecutive cells (chunk k: cells_[k * kChunkCells ...]) by colour:
+  // chunks of one colour share no DOF, so each colour is assembled by all threads without
+  // races (and with the same sums for any thread count), and each chunk's cells one after
+  // the other, neighbours in the mesh's order, so that they write the same columns of the
+  // matrix while those are in cache (SVK square N = 256: 82 -> 71 ms per tangent assembly;
+  // colours of single cells made each pass touch the whole matrix).
+  static constexpr int kChunkCells = 32;
+  std::vector<std::vector<int>> chunkColours_;
+  std::vector<Edge> pressureEdges_;
+  // Dead loads independent of time, computed once: F(t) = factor(t) * F0.
+  std::vector<Eigen::VectorXd> constantDeadLoads_;  // per problem_.loads entry, empty if time dependent
+};
+
+}  // namespace aster::analysis

@@ -1,0 +1,104 @@
+// STAT_NON_LINE's algorithm: incremental loading over a list of instants,
+// Newton-Raphson at each instant with the consistent tangent, imposed
+// displacements eliminated (rows and columns replaced by the identity, which
+// keeps a symmetric tangent symmetric), and automatic step cutting on failure
+// (DEFI_LIST_INST's ECHEC: SUBD_PAS sub-steps, at most SUBD_NIVEAU levels).
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "analysis/additional_terms.hpp"
+#include "linalg/linear_solver.hpp"
+#include "analysis/mechanical_system.hpp"
+
+namespace aster::analysis {
+
+// NEWTON/PREDICTION: the first iteration of each step.
+enum class Prediction {
+  Tangent,       // the tangent at the last converged state (REAC_INCR: or the last factorization)
+  Elastic,       // the elastic matrix (MATRICE='ELASTIQUE''s)
+  Extrapolated,  // start from U_n + (dt_{n+1}/dt_n)(U_n - U_{n-1}), then iterate with MATRICE
+};
+
+struct NewtonSettings {
+  bool elasticMatrix = false;  // MATRICE='ELASTIQUE': the tangent at U = 0, kept
+  Prediction prediction = Prediction::Tangent;
+  int reacIter = 1;            // REAC_ITER: reassemble the tangent every n iterations (0: never)
+  int reacIncr = 1;            // REAC_INCR: reassemble the prediction's tangent every n steps (0: first only)
+  bool arret = true;           // ARRET='NON': accept a step after ITER_GLOB_MAXI iterations
+  bool useRela = true;         // RESI_GLOB_RELA is a criterion
+  bool useMaxi = false;        // RESI_GLOB_MAXI is a criterion (both given: both must hold)
+  double resiGlobRela = 1e-6;
+  double resiGlobMaxi = 1e-6;
+  int iterGlobMaxi = 10;
+  std::string method = "MULT_FRONT";
+  std::string renum = "AUTO";  // SOLVEUR/RENUM
+  int nprec = 8;               // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
+  int subdPas = 4;     // SUBD_PAS
+  int subdNiveau = 3;  // SUBD_NIVEAU (0: no cutting)
+  bool print = true;   // the convergence table
+};
+
+struct ConvergedInstant {
+  double time = 0;
+  const Eigen::VectorXd* U = nullptr;         // all unknowns
+  const Eigen::VectorXd* reactions = nullptr;  // fint - fext (+ terms), nonzero at supports
+  const Eigen::VectorXd* internalForces = nullptr;  // fint = int B^T sigma, per mechanical DOF (FORC_NODA)
+  int iterations = 0;
+  std::vector<double> residuals;  // RESI_GLOB_RELA (or MAXI) per iteration
+};
+
+struct NewtonStatistics {
+  int iterations = 0, factorizations = 0, cuts = 0;
+  int tangentAssemblies = 0;  // residual and tangent; residuals alone are not counted
+  double assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;
+};
+
+class StaticNonlinear {
+ public:
+  StaticNonlinear(const MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings);
+
+  // Runs from U (the state at times[0]) through every later instant; calls
+  // `converged` after each. Throws aster::Error naming the instant that failed;
+  // instants converged before stay reported.
+  void run(Eigen::VectorXd& U, const std::vector<double>& times,
+           const std::function<void(const ConvergedInstant&)>& converged);
+
+  int unknownCount() const { return n_; }
+  const NewtonStatistics& statistics() const { return stats_; }
+  // The linear solver's: analysis, factorizations, ordering, flops of the last factorization.
+  const linalg::LinearSolverStatistics& solverStatistics() const;
+
+ private:
+  struct Attempt;
+  bool solveStep(Eigen::VectorXd& U, double t0, double t1, std::vector<double>& history, std::string& why);
+  void finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt);
+  void buildPattern();
+  void assemble(const Eigen::VectorXd& U, double t, bool withMatrix);
+
+  const MechanicalSystem& system_;
+  AdditionalTerms* terms_;
+  NewtonSettings settings_;
+  int n_ = 0;
+  std::unique_ptr<fem::AssemblyPattern> pattern_;
+  int termsFirstElement_ = 0;
+  linalg::SparseMatrix K_, Kelastic_;
+  Eigen::VectorXd fint_, fext_, r_;
+  NewtonStatistics stats_;
+  struct SolverHolder;
+  std::shared_ptr<SolverHolder> solver_;
+  bool analyzed_ = false;
+  // What the linear solver holds factorized, and the unknowns that were eliminated.
+  enum class Factorized { None, Tangent, Elastic };
+  Factorized factorized_ = Factorized::None;
+  std::vector<char> lastFixed_;
+  // The last converged (sub-)step, for PREDICTION='EXTRAPOLE' and REAC_INCR.
+  Eigen::VectorXd previousIncrement_;
+  double previousDt_ = 0;
+  int steps_ = 0;
+};
+
+}  // namespace aster::analysis

@@ -1,0 +1,61 @@
+// CHOLMOD for symmetric matrices (only the upper triangle is read, after a symmetry check).
+// Mode::Cholesky: supernodal LL^T (BLAS/LAPACK on dense blocks), ordering chosen by CHOLMOD
+//   (AMD, or nested dissection on large matrices); the matrix must be positive definite.
+//   CHOLMOD computes the ordering, the supernodes and the solves; the numeric factorization
+//   is aster-lite's multifrontal one (multifrontal_cholesky.hpp), several times faster
+//   than CHOLMOD's left-looking one on 2D meshes.
+// Mode::LDLT: simplicial LDL^T without pivoting. Rows whose diagonal is absent or zero when
+//   analyze() runs (Lagrange multipliers) are ordered after all others (constrained AMD), so
+//   that a stiffness + constraints system [K B^T; B 0] with K positive definite and B of full
+//   rank factors stably (it is quasi-definite in that order). Other indefinite matrices may
+//   meet a zero pivot, which is reported; use UMFPACK for general symmetric indefinite systems.
+// Mode::Signed: the multifrontal factorization of Mode::Cholesky with signed pivots,
+//   P A P^T = L S L^T, S = diag(+-1), without pivoting (multifrontal_cholesky.hpp): a
+//   positive definite matrix takes exactly the Cholesky path, and a stiffness + Lagrange
+//   multipliers system (constraint rows as for Mode::LDLT) the Cholesky speed. Used by
+//   MULT_FRONT (mult_front_solver.hpp).
+#pragma once
+#include <memory>
+
+#include "linalg/linear_solver.hpp"
+#include "linalg/multifrontal_cholesky.hpp"
+
+namespace aster::linalg {
+
+class CholmodSolver : public LinearSolver {
+ public:
+  enum class Mode { Cholesky, LDLT, Signed };
+  explicit CholmodSolver(Mode mode);
+  ~CholmodSolver() override;
+  CholmodSolver(const CholmodSolver&) = delete;
+  CholmodSolver& operator=(const CholmodSolver&) = delete;
+
+  void analyze(const SparseMatrix& A) override;
+  void factorize(const SparseMatrix& A) override;
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
+  std::string name() const override {
+    return mode_ == Mode::Cholesky ? "CHOLMOD" : mode_ == Mode::LDLT ? "CHOLMOD_LDLT" : "MULT_FRONT";
+  }
+  Mode mode() const { return mode_; }
+  // RENUM: AUTO (AMD; nested dissection on large matrices), AMD, METIS, SANS (natural).
+  // CHOLMOD_LDLT and Signed with constraint rows always order them last (constrained AMD).
+  std::vector<std::string> orderings() const override { return {"AUTO", "AMD", "METIS", "SANS"}; }
+
+  // Relative tolerance of the symmetry check, per pair A(i,j), A(j,i). Default 1e-10.
+  void setSymmetryTolerance(double relTol) { symmetryTolerance_ = relTol; }
+
+ private:
+  struct Handles;  // cholmod.h's structures, kept out of this header
+  void planMultifrontal(const SparseMatrix& A, const std::vector<int>& constraintSet);
+  void auditFactor(const SparseMatrix& A) const;
+  Mode mode_;
+  double symmetryTolerance_ = 1e-10;
+  bool factorized_ = false;
+  std::unique_ptr<Handles> h_;
+  std::unique_ptr<SymmetryCheck> symmetry_;              // once analysed
+  std::unique_ptr<MultifrontalCholesky> multifrontal_;
+  std::vector<double> pivots_;  // L(k,k) from the multifrontal factorization, times S(k,k)
+  bool negativePivots_ = false;  // S != I: solve() applies S between the triangular solves
+};
+
+}  // namespace aster::linalg

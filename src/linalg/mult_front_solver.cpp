@@ -1,0 +1,74 @@
+#include "linalg/mult_front_solver.hpp"
+
+#include "core/messages.hpp"
+#include "linalg/umfpack_solver.hpp"
+
+namespace aster::linalg {
+
+MultFrontSolver::MultFrontSolver() : signed_(std::make_unique<CholmodSolver>(CholmodSolver::Mode::Signed)) {}
+
+MultFrontSolver::~MultFrontSolver() = default;
+
+LinearSolver& MultFrontSolver::active() const {
+  return umfpack_ ? static_cast<LinearSolver&>(*umfpack_) : static_cast<LinearSolver&>(*signed_);
+}
+
+void MultFrontSolver::analyze(const SparseMatrix& A) {
+  if (umfpack_) {
+    umfpack_->setSingularityDigits(nprec_);
+    umfpack_->analyze(A);
+  } else {
+    signed_->setOrdering(ordering_);
+    signed_->setSingularityDigits(nprec_);
+    signed_->setMultipliersFrom(multipliersFrom_);
+    signed_->setSymmetricByConstruction(symmetricByConstruction_);
+    signed_->analyze(A);
+  }
+  gatherStatistics();
+}
+
+void MultFrontSolver::factorize(const SparseMatrix& A) {
+  active().setSingularityDigits(nprec_);
+  if (!umfpack_) {
+    try {
+      signed_->factorize(A);
+      gatherStatistics();
+      return;
+    } catch (const UnsymmetricMatrixError&) {
+      handOver("the matrix is not symmetric", A);
+    } catch (const SingularMatrixError& e) {
+      const std::string what = e.what(), prefix = name() + ": ";
+      handOver("without pivoting, " + (what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what), A);
+    }
+  }
+  umfpack_->factorize(A);
+  gatherStatistics();
+}
+
+void MultFrontSolver::handOver(const std::string& why, const SparseMatrix& A) {
+  handedOver_ = why;
+  Messages::info("MULT_FRONT: " + why + "; UMFPACK (LU with pivoting) takes over");
+  umfpack_ = std::make_unique<UmfpackSolver>();
+  umfpack_->setSingularityDigits(nprec_);
+  umfpack_->analyze(A);
+}
+
+void MultFrontSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  active().solve(b, x);
+  gatherStatistics();
+}
+
+void MultFrontSolver::gatherStatistics() const {
+  const LinearSolverStatistics& s = signed_->statistics();
+  stats_ = umfpack_ ? umfpack_->statistics() : s;
+  if (!umfpack_) return;
+  stats_.analyzeSeconds += s.analyzeSeconds;
+  stats_.factorizeSeconds += s.factorizeSeconds;
+  stats_.solveSeconds += s.solveSeconds;
+  stats_.analyzeCount += s.analyzeCount;
+  stats_.factorizeCount += s.factorizeCount;
+  stats_.solveCount += s.solveCount;
+  stats_.numericSeconds += s.numericSeconds;
+}
+
+}  // namespace aster::linalg

@@ -1,0 +1,435 @@
+#include "linalg/multifrontal_cholesky.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <memory>
+#include <new>
+#include <numeric>
+
+#include "linalg/blas_info.hpp"
+
+extern "C" {
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
+            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
+void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k, const double* alpha,
+            const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
+            const int* ldc);
+void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
+            const int* lda, const double* beta, double* c, const int* ldc);
+}
+
+namespace aster::linalg {
+
+namespace {
+
+// A child's update matrix (u x u, lower triangle) is added into its parent's front in two
+// parts: the columns that fall on the parent's own columns go into its block of L (m x width)
+// before the parent is factorized; the others go into the parent's update matrix after the
+// parent's dsyrk has written it. relative[i]: position of the child's update row i among the
+// parent's rows (ascending), so the first part is the columns j < split.
+int blockColumns(const int* relative, int u, int width) {
+  return static_cast<int>(std::lower_bound(relative, relative + u, width) - relative);
+}
+
+void addIntoBlock(const double* update, int u, const int* relative, int split, double* block, int m) {
+  for (int j = 0; j < split; ++j) {
+    const double* column = update + static_cast<size_t>(j) * u;
+    double* destination = block + static_cast<size_t>(relative[j]) * m;
+    for (int i = j; i < u; ++i) destination[relative[i]] += column[i];
+  }
+}
+
+void addIntoUpdate(const double* update, int u, const int* relative, int split, int width, double* parentUpdate,
+                   int parentU) {
+  for (int j = split; j < u; ++j) {
+    const double* column = update + static_cast<size_t>(j) * u;
+    double* destination = parentUpdate + static_cast<size_t>(relative[j] - width) * parentU;
+    for (int i = j; i < u; ++i) destination[relative[i] - width] += column[i];
+  }
+}
+
+// Dense kernels of the fronts at the top of the tree, on `parts` threads (one-thread BLAS
+// each): the work split in independent pieces rather than left to a multithreaded BLAS,
+// whose idle threads spin for a while after each call and slow down whatever runs next.
+template <class Piece>
+void inParallel(int parts, Piece&& piece) {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static, 1) num_threads(blasCallersThatFit(parts))
+#endif
+  for (int p = 0; p < parts; ++p) piece(p);
+}
+
+// First row of the p-th of `parts` equal slices of [0, rows).
+int slice(int rows, int parts, int p) { return static_cast<int>(static_cast<long long>(rows) * p / parts); }
+
+// B (rows x n, ld ldb) := B L^-T, L lower n x n: slices of rows.
+void parallelTrsm(int parts, int rows, int n, const double* L, int ldl, double* B, int ldb) {
+  const double one = 1.0;
+  inParallel(parts, [&](int p) {
+    const int r0 = slice(rows, parts, p), r = slice(rows, parts, p + 1) - r0;
+    if (r > 0) dtrsm_("R", "L", "T", "N", &r, &n, &one, L, &ldl, B + r0, &ldb);
+  });
+}
+
+// Lower triangle of C (n x n) := beta C - A A^T (A n x k): slices of columns of equal work,
+// each a dsyrk on its diagonal block and a dgemm below it.
+void parallelSyrk(int parts, int n, int k, const double* A, int lda, double beta, double* C, int ldc) {
+  std::vector<int> first(parts + 1, n);
+  first[0] = 0;
+  const double total = 0.5 * n * (n + 1.0);
+  double work = 0;
+  for (int j = 0, p = 1; j < n && p < parts; ++j) {
+    work += n - j;
+    if (work >= total * p / parts) first[p++] = j + 1;
+  }
+  const double minusOne = -1.0;
+  inParallel(parts, [&](int p) {
+    const int c0 = first[p], c = first[p + 1] - c0, below = n - c0 - c;
+    if (c <= 0) return;
+    double* diagonal = C + c0 + static_cast<size_t>(c0) * ldc;
+    dsyrk_("L", "N", &c, &k, &minusOne, A + c0, &lda, &beta, diagonal, &ldc);
+    if (below > 0)
+      dgemm_("N", "T", &below, &c, &k, &minusOne, A + c0 + c, &lda, A + c0, &lda, &beta, diagonal + c, &ldc);
+  });
+}
+
+// C (rows x n) -= A B^T (A rows x k, B n x k): slices of rows.
+void parallelGemm(int parts, int rows, int n, int k, const double* A, int lda, const double* B, int ldb, double* C,
+                  int ldc) {
+  const double one = 1.0, minusOne = -1.0;
+  inParallel(parts, [&](int p) {
+    const int r0 = slice(rows, parts, p), r = slice(rows, parts, p + 1) - r0;
+    if (r > 0) dgemm_("N", "T", &r, &n, &k, &minusOne, A + r0, &lda, B, &ldb, &one, C + r0, &ldc);
+  });
+}
+
+// The columns of a front (block: m x width, ld m) factorized right-looking, panel by panel:
+// each panel's dpotrf, then the rows below it (dtrsm) and the columns right of it (dsyrk,
+// dgemm) in slices. Returns LAPACK's info (0, or the 1-based column of a non-positive pivot).
+int parallelFrontCholesky(int parts, int width, int m, double* block) {
+  constexpr int kPanel = 192;
+  for (int p = 0; p < width; p += kPanel) {
+    const int b = std::min(kPanel, width - p);
+    double* panel = block + p + static_cast<size_t>(p) * m;
+    int info = 0;
+    dpotrf_("L", &b, panel, &m, &info);
+    if (info != 0) return p + info;
+    const int below = m - p - b, right = width - p - b;
+    if (below > 0) parallelTrsm(parts, below, b, panel, m, panel + b, m);
+    if (right > 0) {
+      double* trailing = panel + b + static_cast<size_t>(b) * m;
+      parallelSyrk(parts, right, b, panel + b, m, 1.0, trailing, m);
+      parallelGemm(parts, below - right, right, b, panel + b + right, m, panel + b, m, trailing + right, m);
+    }
+  }
+  return 0;
+}
+
+// A front of signed columns: its `width` pivot columns of the m x width block are
+// factorized in place, L(k,k) = sqrt|d| and sign[k] = sign d for each pivot d, the rows
+// below included (they become L's). The diagonal block column by column (these fronts
+// hold Lagrange multipliers, a few at the top of the tree), the rows below by dtrsm:
+// A21 = L21 S L11^T. Returns 0, or the 1-based column of a zero or non-finite pivot.
+int signedFrontFactor(int width, int m, double* block, double* sign) {
+  for (int j = 0; j < width; ++j) {
+    double* col = block + static_cast<size_t>(j) * m;
+    const double d = col[j];
+    if (d == 0.0 || !std::isfinite(d)) return j + 1;
+    const double l = std::sqrt(std::abs(d));
+    sign[j] = d > 0 ? 1.0 : -1.0;
+    col[j] = l;
+    const double scale = 1.0 / (sign[j] * l);  // L(i,j) = a(i,j) / (S(j,j) L(j,j))
+    for (int i = j + 1; i < width; ++i) col[i] *= scale;
+    for (int k = j + 1; k < width; ++k) {
+      double* target = block + static_cast<size_t>(k) * m;
+      const double f = sign[j] * col[k];
+      if (f != 0.0)
+        for (int i = k; i < width; ++i) target[i] -= col[i] * f;
+    }
+  }
+  const int u = m - width;
+  if (u > 0) {
+    const double one = 1.0;
+    dtrsm_("R", "L", "T", "N", &u, &width, &one, block, &m, block + width, &m);  // L21 S
+    for (int k = 0; k < width; ++k)
+      if (sign[k] < 0) {
+        double* column = block + static_cast<size_t>(k) * m;
+        for (int i = width; i < m; ++i) column[i] = -column[i];
+      }
+  }
+  return 0;
+}
+
+// The update matrix of a signed front, -L21 S L21^T (u x u, written whole): a dgemm with
+// the columns of L21 signed.
+void signedUpdate(int u, int width, const double* L21, int ld, const double* sign, double* update) {
+  std::vector<double> signedL21(static_cast<size_t>(u) * width);
+  for (int k = 0; k < width; ++k)
+    for (int i = 0; i < u; ++i)
+      signedL21[i + static_cast<size_t>(k) * u] = sign[k] * L21[i + static_cast<size_t>(k) * ld];
+  const double minusOne = -1.0, zero = 0.0;
+  dgemm_("N", "T", &u, &u, &width, &minusOne, signedL21.data(), &u, L21, &ld, &zero, update, &u);
+}
+
+}  // namespace
+
+MultifrontalCholesky::MultifrontalCholesky(const SupernodalStructure& structure, const SparseMatrix& A,
+                                           int threads, double parallelFlops, const std::vector<char>& indefinite)
+    : structure_(structure) {
+  const SupernodalStructure& S = structure_;
+  const int n = S.n, ns = S.supernodeCount;
+  if (A.rows() != n || A.cols() != n || !A.isCompressed())
+    throw Error("multifrontal Cholesky: the matrix does not match the symbolic factorization");
+
+  std::vector<int> owner(n);
+  for (int s = 0; s < ns; ++s)
+    for (int k = S.firstColumn[s]; k < S.firstColumn[s + 1]; ++k) owner[k] = s;
+  parent_.assign(ns, -1);
+  childStart_.assign(ns + 1, 0);
+  flops_.resize(ns);
+  for (int s = 0; s < ns; ++s) {
+    const int width = S.firstColumn[s + 1] - S.firstColumn[s];
+    const int m = S.rowStart[s + 1] - S.rowStart[s];
+    if (m > width) {
+      parent_[s] = owner[S.rows[S.rowStart[s] + width]];
+      ++childStart_[parent_[s] + 1];
+    }
+    const double w = width, u = m - width;
+    flops_[s] = w * w * w / 3 + u * w * w + u * u * w + u * u;  // dpotrf, dtrsm, dsyrk, extend-add
+  }
+  totalFlops_ = std::accumulate(flops_.begin(), flops_.end(), 0.0);
+  signedFront_.assign(ns, 0);
+  if (!indefinite.empty()) {
+    if (static_cast<int>(indefinite.size()) != n) throw Error("multifrontal Cholesky: one flag per column expected");
+    for (int k = 0; k < n; ++k)
+      if (indefinite[k]) signedFront_[owner[k]] = 1;
+  }
+  std::partial_sum(childStart_.begin(), childStart_.end(), childStart_.begin());
+  children_.resize(childStart_[ns]);
+  {
+    std::vector<int> next(childStart_.begin(), childStart_.end() - 1);
+    for (int s = 0; s < ns; ++s)  // ascending: each front adds its children in a fixed order
+      if (parent_[s] >= 0) children_[next[parent_[s]]++] = s;
+  }
+
+  // Positions of each child's update rows among its parent's rows.
+  std::vector<int> position(n, -1);
+  relativeStart_.assign(ns + 1, 0);
+  for (int s = 0; s < ns; ++s) {
+    const int width = S.firstColumn[s + 1] - S.firstColumn[s];
+    relativeStart_[s + 1] = relativeStart_[s] + (S.rowStart[s + 1] - S.rowStart[s] - width);
+  }
+  relative_.resize(relativeStart_[ns]);
+  for (int p = 0; p < ns; ++p) {
+    for (int i = S.rowStart[p]; i < S.rowStart[p + 1]; ++i) position[S.rows[i]] = i - S.rowStart[p];
+    for (int e = childStart_[p]; e < childStart_[p + 1]; ++e) {
+      const int c = children_[e];
+      const int width = S.firstColumn[c + 1] - S.firstColumn[c];
+      long long out = relativeStart_[c];
+      for (int i = S.rowStart[c] + width; i < S.rowStart[c + 1]; ++i) {
+        const int at = position[S.rows[i]];
+        if (at < 0) throw Error("multifrontal Cholesky: a row of a supernode is missing from its parent");
+        relative_[out++] = at;
+      }
+    }
+    for (int i = S.rowStart[p]; i < S.rowStart[p + 1]; ++i) position[S.rows[i]] = -1;
+  }
+
+  // Where each entry of the lower triangle of P A P^T goes in L's storage.
+  std::vector<int> inverse(n);
+  for (int k = 0; k < n; ++k) inverse[S.permutation ? S.permutation[k] : k] = k;
+  entryStart_.assign(ns + 1, 0);
+  entrySource_.clear();
+  entryTarget_.clear();
+  entrySource_.reserve(A.nonZeros() / 2 + n);
+  entryTarget_.reserve(A.nonZeros() / 2 + n);
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  for (int s = 0; s < ns; ++s) {
+    const int k1 = S.firstColumn[s], m = S.rowStart[s + 1] - S.rowStart[s];
+    for (int i = S.rowStart[s]; i < S.rowStart[s + 1]; ++i) position[S.rows[i]] = i - S.rowStart[s];
+    for (int k = k1; k < S.firstColumn[s + 1]; ++k) {
+      const int j = S.permutation ? S.permutation[k] : k;
+      for (int p = outer[j]; p < outer[j + 1]; ++p) {
+        const int r = inverse[inner[p]];
+        if (r < k) continue;
+        if (position[r] < 0) throw Error("multifrontal Cholesky: an entry of the matrix is outside the factor's pattern");
+        entrySource_.push_back(p);
+        entryTarget_.push_back(position[r] + (k - k1) * m);
+      }
+    }
+    for (int i = S.rowStart[s]; i < S.rowStart[s + 1]; ++i) position[S.rows[i]] = -1;
+    entryStart_[s + 1] = static_cast<long long>(entrySource_.size());
+  }
+  schedule(threads, parallelFlops);
+}
+
+// Shares subtrees out between threads: the heaviest subtree is split (its root goes to the
+// top of the tree, its children become subtrees) until a longest-first assignment balances
+// the threads within 5 %, as the roots split into ever smaller subtrees.
+void MultifrontalCholesky::schedule(int threads, double parallelFlops) {
+  threadSupernodes_.clear();
+  topSupernodes_.clear();
+  const int ns = structure_.supernodeCount;
+  if (threads < 2 || totalFlops_ < parallelFlops) {
+    topSupernodes_.resize(ns);
+    std::iota(topSupernodes_.begin(), topSupernodes_.end(), 0);
+    return;
+  }
+  std::vector<double> subtree(flops_);
+  for (int s = 0; s < ns; ++s)
+    if (parent_[s] >= 0) subtree[parent_[s]] += subtree[s];
+  std::vector<int> candidates;
+  for (int s = 0; s < ns; ++s)
+    if (parent_[s] < 0) candidates.push_back(s);
+  std::vector<char> top(ns, 0);
+  std::vector<std::vector<int>> bins;
+  for (int split = 0; split < 4096 && !candidates.empty(); ++split) {
+    std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return subtree[a] > subtree[b]; });
+    std::vector<double> load(threads, 0.0);
+    bins.assign(threads, {});
+    for (int c : candidates) {
+      const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+      load[t] += subtree[c];
+      bins[t].push_back(c);
+    }
+    const double most = *std::max_element(load.begin(), load.end());
+    const double least = *std::min_element(load.begin(), load.end());
+    if (most - least <= 0.05 * most) break;
+    const int heaviest = candidates.front();
+    candidates.erase(candidates.begin());
+    top[heaviest] = 1;
+    for (int e = childStart_[heaviest]; e < childStart_[heaviest + 1]; ++e) candidates.push_back(children_[e]);
+    bins.clear();
+  }
+  if (bins.empty()) {  // never balanced: one thread
+    topSupernodes_.resize(ns);
+    std::iota(topSupernodes_.begin(), topSupernodes_.end(), 0);
+    return;
+  }
+  // Every supernode below a subtree's root goes to that root's thread (a parent is numbered
+  // after its children, so walking down the numbers meets the parent first).
+  std::vector<int> thread(ns, -1);
+  for (int t = 0; t < threads; ++t)
+    for (int root : bins[t]) thread[root] = t;
+  for (int s = ns - 1; s >= 0; --s)  // parents before children
+    if (!top[s] && thread[s] < 0 && parent_[s] >= 0) thread[s] = thread[parent_[s]];
+  threadSupernodes_.assign(threads, {});
+  for (int s = 0; s < ns; ++s) {
+    if (top[s])
+      topSupernodes_.push_back(s);
+    else
+      threadSupernodes_[thread[s]].push_back(s);
+  }
+}
+
+int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* values, double* pivots,
+                                             Updates& updates, int parts) const {
+  const SupernodalStructure& S = structure_;
+  const int k1 = S.firstColumn[s];
+  const int width = S.firstColumn[s + 1] - k1;
+  const int m = S.rowStart[s + 1] - S.rowStart[s];
+  const int u = m - width;
+  double* block = values + S.valueStart[s];
+  std::fill(block, block + static_cast<size_t>(m) * width, 0.0);
+  for (long long e = entryStart_[s]; e < entryStart_[s + 1]; ++e) block[entryTarget_[e]] = a[entrySource_[e]];
+  auto childUpdate = [&](int e, int& cu, const int*& relative) {
+    const int c = children_[e];
+    cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);
+    relative = relative_.data() + relativeStart_[c];
+    return updates[c].get();
+  };
+  for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
+    int cu = 0;
+    const int* relative = nullptr;
+    const double* update = childUpdate(e, cu, relative);
+    addIntoBlock(update, cu, relative, blockColumns(relative, cu, width), block, m);
+  }
+  int info = 0;
+  std::vector<double> sign(signedFront_[s] ? width : 0);
+  if (signedFront_[s]) {
+    info = signedFrontFactor(width, m, block, sign.data());
+  } else if (parts > 1) {
+    info = parallelFrontCholesky(parts, width, m, block);  // the rows below too
+  } else {
+    dpotrf_("L", &width, block, &m, &info);
+    if (info == 0 && u > 0) {
+      const double one = 1.0;
+      dtrsm_("R", "L", "T", "N", &u, &width, &one, block, &m, block + width, &m);
+    }
+  }
+  if (info != 0) return k1 + std::max(info, 1) - 1;
+  if (pivots)
+    for (int k = 0; k < width; ++k)
+      pivots[k1 + k] = (sign.empty() ? 1.0 : sign[k]) * block[k + static_cast<size_t>(k) * m];
+  if (u > 0) {
+    updates[s].reset(new double[static_cast<size_t>(u) * u]);  // written whole by dsyrk or dgemm
+    if (!sign.empty()) {
+      signedUpdate(u, width, block + width, m, sign.data(), updates[s].get());
+    } else if (parts > 1) {
+      parallelSyrk(parts, u, width, block + width, m, 0.0, updates[s].get(), u);
+    } else {
+      const double minusOne = -1.0, zero = 0.0;
+      dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &zero, updates[s].get(), &u);
+    }
+  }
+  for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
+    int cu = 0;
+    const int* relative = nullptr;
+    const double* update = childUpdate(e, cu, relative);
+    addIntoUpdate(update, cu, relative, blockColumns(relative, cu, width), width, updates[s].get(), u);
+    updates[children_[e]].reset();
+  }
+  return -1;
+}
+
+int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, double* pivots) const {
+  Updates updates(structure_.supernodeCount);
+  const double* a = A.valuePtr();
+  const int threads = static_cast<int>(threadSupernodes_.size());
+  if (threads == 0) {
+    for (int s : topSupernodes_) {
+      const int column = factorizeSupernode(s, a, values, pivots, updates, 1);
+      if (column >= 0) return column;
+    }
+    return -1;
+  }
+  // Every BLAS call on its calling thread: subtrees on their threads, then the large fronts
+  // of the top of the tree in slices.
+  ScopedBlasThreads oneEach(1);
+  // Each thread stops at its own first failure, so the column reported is the one a
+  // single thread would meet first, whatever the number of threads.
+  // An exception must not leave an OpenMP region: an update matrix that cannot be
+  // allocated is reported after it.
+  std::vector<int> failure(threads, INT_MAX);
+  std::vector<char> outOfMemory(threads, 0);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static, 1) num_threads(blasCallersThatFit(threads))
+#endif
+  for (int t = 0; t < threads; ++t) {
+    try {
+      for (int s : threadSupernodes_[t]) {
+        const int column = factorizeSupernode(s, a, values, pivots, updates, 1);
+        if (column >= 0) {
+          failure[t] = column;
+          break;
+        }
+      }
+    } catch (const std::bad_alloc&) {
+      outOfMemory[t] = 1;
+    }
+  }
+  if (std::find(outOfMemory.begin(), outOfMemory.end(), 1) != outOfMemory.end())
+    throw Error("multifrontal Cholesky: out of memory for the update matrices of the factorization");
+  const int failed = *std::min_element(failure.begin(), failure.end());
+  if (failed != INT_MAX) return failed;
+  for (int s : topSupernodes_) {
+    const int column = factorizeSupernode(s, a, values, pivots, updates, threads);
+    if (column >= 0) return column;
+  }
+  return -1;
+}
+
+}  // namespace aster::linalg

@@ -1,0 +1,90 @@
+// The numeric half of a supernodal Cholesky factorization A = L L^T, multifrontal.
+//
+// Each supernode (a run of columns of L with one row pattern) owns a dense frontal matrix
+// over its rows: it gathers its columns of A and the update matrices of its children in the
+// supernodal elimination tree, factorizes its own columns (dpotrf, dtrsm) straight into the
+// storage of L, and leaves its Schur complement (dsyrk) as its update matrix for its parent.
+// Every dense operation works on a whole front, so its inner dimension is the supernode's
+// width; a left-looking method (CHOLMOD's) updates a supernode once per descendant instead,
+// with that descendant's few columns as inner dimension, and ran at 11 % of dgemm's rate on
+// 2D meshes (docs/performance.md).
+//
+// Subtrees of the elimination tree are independent: they are shared out between threads,
+// each with a one-thread BLAS, and the top of the tree, whose fronts are large, runs after
+// them, each front's dense work split between the threads. Each front is computed the same way on any thread, in the
+// same order of its children, and a failure names the same column as on one thread.
+//
+// The symbolic structure (ordering, supernodes, row patterns, storage of L) is CHOLMOD's
+// supernodal analysis, so that cholmod_solve uses the factor as if CHOLMOD had computed it.
+//
+// Signed columns (stiffness + Lagrange multipliers): P A P^T = L S L^T, S = diag(+-1), the
+// sign of each pivot taken as it comes, without pivoting. Fronts holding a column flagged
+// `indefinite` are factorized column by column (L(k,k) = sqrt|d|, S(k,k) = sign d); the
+// others by dpotrf as above. With the multipliers ordered after the unknowns they
+// constrain, a system [K B^T; B -C] with K positive definite and C >= 0 meets positive
+// pivots first and then those of -(C + B K^-1 B^T), negative. Solve with
+// L y = P b, z = S y, L^T P x = z.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "linalg/linear_solver.hpp"
+
+namespace aster::linalg {
+
+// CHOLMOD's supernodal symbolic factor, field by field (cholmod_factor with int indices).
+struct SupernodalStructure {
+  int n = 0;
+  int supernodeCount = 0;
+  const int* firstColumn = nullptr;  // L->super, size supernodeCount + 1
+  const int* rowStart = nullptr;     // L->pi, size supernodeCount + 1, into rows
+  const int* valueStart = nullptr;   // L->px, size supernodeCount + 1, into the values of L
+  const int* rows = nullptr;         // L->s: rows of each supernode, its own columns first, ascending
+  const int* permutation = nullptr;  // L->Perm: row k of L is row permutation[k] of A (null: identity)
+};
+
+class MultifrontalCholesky {
+ public:
+  // Below this many estimated flops a factorization runs on one thread.
+  static constexpr double kParallelFlops = 2e7;
+
+  // Plans the factorization of matrices with A's pattern, both triangles stored (the same
+  // pattern the structure was computed from). threads: how many subtrees may run at once.
+  // indefinite[k] (size n, or empty): column k of P A P^T may take a negative pivot.
+  MultifrontalCholesky(const SupernodalStructure& structure, const SparseMatrix& A, int threads,
+                       double parallelFlops = kParallelFlops, const std::vector<char>& indefinite = {});
+
+  // L = chol(P A P^T) into values (the supernodal storage, column-major blocks at valueStart),
+  // and L(k,k) into pivots[k] (size n) when given, negated where S(k,k) = -1. Returns -1, or
+  // the first column of P A P^T whose pivot was not positive (not finite and non-zero in an
+  // indefinite front; L is then partial).
+  int factorize(const SparseMatrix& A, double* values, double* pivots = nullptr) const;
+
+  // Subtrees the factorization runs concurrently (0: every supernode on the calling thread).
+  int concurrentSubtrees() const { return static_cast<int>(threadSupernodes_.size()); }
+  double estimatedFlops() const { return totalFlops_; }
+
+ private:
+  using Updates = std::vector<std::unique_ptr<double[]>>;  // per supernode, until its parent adds it
+  // parts > 1: the front's dense work split between that many threads (top of the tree).
+  int factorizeSupernode(int s, const double* a, double* values, double* pivots, Updates& updates,
+                         int parts) const;
+  void schedule(int threads, double parallelFlops);
+
+  SupernodalStructure structure_;
+  std::vector<int> parent_;            // supernode of the parent, -1 at a root
+  std::vector<int> childStart_;        // children of s: children_[childStart_[s] .. childStart_[s + 1])
+  std::vector<int> children_;
+  std::vector<long long> relativeStart_;  // update rows of s as positions in its parent's rows
+  std::vector<int> relative_;
+  std::vector<long long> entryStart_;  // entries of A in supernode s: entryStart_[s] .. entryStart_[s + 1]
+  std::vector<int> entrySource_;       // index in A's values
+  std::vector<int> entryTarget_;       // offset in the supernode's block of L
+  std::vector<double> flops_;          // estimate per supernode
+  std::vector<char> signedFront_;      // per supernode: holds an indefinite column
+  double totalFlops_ = 0;
+  std::vector<std::vector<int>> threadSupernodes_;  // per thread, in elimination order
+  std::vector<int> topSupernodes_;                 // after them, each front split between the threads
+};
+
+}  // namespace aster::linalg
