@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/convergence_table.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
@@ -41,6 +42,10 @@ StaticNonlinear::StaticNonlinear(const MechanicalSystem& system, AdditionalTerms
   solver_->solver->setSingularityDigits(settings_.nprec);
   // Contact's terms keep the check: their symmetry is not exact by construction.
   solver_->solver->setSymmetricByConstruction(!terms_ && system_.symmetricTangent());
+  if (settings_.print) {
+    table_ = std::make_unique<ConvergenceTable>(terms_ != nullptr);
+    addObserver(*table_);
+  }
 }
 
 void StaticNonlinear::buildPattern() {
@@ -67,62 +72,62 @@ void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatr
   stats_.assemblySeconds += seconds(start);
 }
 
+struct StaticNonlinear::Step {
+  double t0 = 0, t1 = 0;
+  std::vector<std::pair<int, double>> imposed;  // imposed displacements at t1
+  Eigen::VectorXd Ustart;                       // the state the step starts from
+  // The size of the displacements the data of the step give: the state it starts from
+  // and the imposed values (the round-off test of convergence()).
+  double dataScale = 0;
+  std::vector<char> fixed;  // per unknown: imposed, or fixed by the additional terms
+  Eigen::VectorXd target;   // values of the fixed unknowns
+  bool statusChanged = false;  // the additional terms changed status with the last correction
+};
+
+struct StaticNonlinear::Iteration {
+  double time = 0;  // the step's end, t1
+  int k = 0;
+  Clock::time_point start;
+  bool elastic = false;          // the elastic matrix serves this iteration
+  bool assembleTangent = false;  // the tangent at U is assembled (else the kept factorization serves)
+  bool residualFirst = false;    // the residual is assembled alone first, the tangent only if needed
+  double rela = 0, resMax = 0;   // RESI_GLOB_RELA, RESI_GLOB_MAXI
+  bool dirichletMet = true;      // U holds the imposed values
+  std::string contact;           // the terms' status when the residual was measured (for the observers)
+  bool refactored = false;
+};
+
 bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::vector<double>& history,
                                 std::string& why) {
-  const int nm = system_.dofCount();
-  const auto imposed = system_.imposed(t1);
-  std::vector<char> fixed(n_, 0);
-  Eigen::VectorXd target = Eigen::VectorXd::Zero(n_);  // values of the fixed unknowns
-  linalg::SparseMatrix Kmod;
-  bool statusChanged = false;
-  linalg::LinearSolver& solver = *solver_->solver;
+  Step step;
+  step.t0 = t0;
+  step.t1 = t1;
+  step.imposed = system_.imposed(t1);
+  step.fixed.assign(n_, 0);
+  step.target = Eigen::VectorXd::Zero(n_);
+  step.Ustart = U;
+  step.dataScale = U.head(system_.dofCount()).lpNorm<Eigen::Infinity>();
+  for (const auto& [d, v] : step.imposed) step.dataScale = std::max(step.dataScale, std::fabs(v));
   history.clear();
-  const Eigen::VectorXd Ustart = U;
-  // The size of the displacements the data of the step give: the state it
-  // starts from and the imposed values (the round-off test below).
-  double dataScale = Ustart.head(nm).lpNorm<Eigen::Infinity>();
-  for (const auto& [d, v] : imposed) dataScale = std::max(dataScale, std::fabs(v));
   // PREDICTION='EXTRAPOLE': start from U_n + (dt_{n+1} / dt_n) (U_n - U_{n-1}), the last
   // converged (sub-)step's increment; the first step has none and starts from U_n.
   if (settings_.prediction == Prediction::Extrapolated && previousDt_ > 0)
     U += ((t1 - t0) / previousDt_) * previousIncrement_;
-  if (settings_.print)
-    Messages::info("  Instant " + sci(t1) + "\n    iter  RESI_GLOB_RELA   RESI_GLOB_MAXI   matrix      time (s)   " +
-                   (terms_ ? "contact" : ""));
+  for (NewtonObserver* o : observers_) o->stepStarted(t0, t1);
   for (int k = 0;; ++k) {
-    const auto iterationStart = Clock::now();
+    Iteration it;
+    it.time = t1;
+    it.k = k;
+    it.start = Clock::now();
     // Ctrl-C: the unconverged instant is abandoned; the converged ones are kept.
     if (interrupt::requested())
       throw Interrupted("interrupted (SIGINT) during the instant " + sci(t1) + " (Newton iteration " +
                         std::to_string(k) + "), which is abandoned");
     if (terms_ && terms_->update(U)) buildPattern();
     if (!pattern_) buildPattern();
-    // The matrix of this iteration: the elastic one, or the tangent at U assembled now,
-    // or the factorization kept from before (REAC_ITER, REAC_INCR).
-    bool elasticNow = settings_.elasticMatrix;
-    bool assembleTangent = false;
-    if (k == 0 && settings_.prediction == Prediction::Elastic) {
-      elasticNow = true;
-    } else if (k == 0 && settings_.prediction == Prediction::Tangent) {
-      elasticNow = false;
-      assembleTangent = factorized_ != Factorized::Tangent || steps_ == 0 ||
-                        (settings_.reacIncr > 0 && steps_ % settings_.reacIncr == 0);
-    } else if (!elasticNow) {
-      assembleTangent = factorized_ != Factorized::Tangent || k == 0 ||
-                        (settings_.reacIter > 0 && k % settings_.reacIter == 0);
-    }
-    // Near convergence the tangent is often not needed: Newton converges quadratically, so a
-    // relative residual below the square root of RESI_GLOB_RELA is usually followed by a
-    // converged one. The residual is then assembled alone first (a fifth of the cost of
-    // residual and tangent), and the tangent only if the iteration goes on (SVK square:
-    // 5 of 20 tangent assemblies saved). Not before the third iteration: the first one's
-    // residual is the previous instant's (imposed displacements enter with the first
-    // correction) and says nothing of the coming one.
-    const bool residualFirst = assembleTangent && k >= 2 && !statusChanged &&
-                               settings_.useRela && !settings_.useMaxi &&
-                               history.back() <= std::sqrt(settings_.resiGlobRela);
+    chooseMatrix(step, history, it);
     try {
-      assemble(U, t1, assembleTangent && !residualFirst);
+      assembleIteration(U, step, it);
     } catch (const InvalidStateError& e) {
       // An inverted cell after too large a correction: the step may succeed
       // when cut, as with code_aster's EVENEMENT='ERREUR'. Invalid data (a
@@ -131,163 +136,237 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
       stats_.iterations += k;
       return false;
     }
-    if (elasticNow && Kelastic_.size() == 0) {
-      Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
-      Eigen::VectorXd keepFint = fint_, keepFext = fext_, keepR = r_;
-      assemble(zero, t1, true);
-      Kelastic_ = K_;
-      fint_ = keepFint;
-      fext_ = keepFext;
-      r_ = keepR;
-    }
-
-    // The fixed unknowns: imposed displacements, and what the terms fix.
-    std::fill(fixed.begin(), fixed.end(), 0);
-    for (const auto& [d, v] : imposed) {
-      fixed[d] = 1;
-      target(d) = v;
-    }
-    if (terms_) {
-      std::vector<int> extra;
-      terms_->fixedUnknowns(extra);
-      for (int d : extra) {
-        fixed[d] = 1;
-        target(d) = 0.0;
-      }
-    }
+    fixUnknowns(step);
     // A kept tangent factorization eliminated other unknowns: assemble anew.
-    if (!elasticNow && !assembleTangent && fixed != lastFixed_) {
+    if (!it.elastic && !it.assembleTangent && step.fixed != lastFixed_) {
       assemble(U, t1, true);
-      assembleTangent = true;
+      it.assembleTangent = true;
     }
-
-    // Residual on the free unknowns, relative to the forces that balance the
-    // internal forces (external loads plus support reactions), as code_aster.
-    double resMax = 0, denom = 0;
-    for (int i = 0; i < n_; ++i) {
-      if (fixed[i]) {
-        if (i < nm) denom = std::max(denom, std::fabs(fint_(i)));
-        continue;
-      }
-      resMax = std::max(resMax, std::fabs(r_(i)));
-      if (i < nm) denom = std::max(denom, std::fabs(r_(i) - fint_(i)));  // the loads that balance fint
-    }
-    if (!std::isfinite(resMax)) {
-      why = "the residual is not a number (the state became invalid)";
-      return false;
-    }
-    const double rela = denom > 0 ? resMax / denom : resMax;
-    const double measure = settings_.useRela ? rela : resMax;
-    history.push_back(measure);
-    // One row of the table, printed when the iteration ends (its time included); the
-    // contact column says how contact stands when the residual is measured.
-    const std::string contactText = terms_ ? terms_->statusText() : "";
-    auto printRow = [&](const char* matrix) {
-      if (!settings_.print) return;
-      char buf[96];
-      std::snprintf(buf, sizeof buf, "    %4d  %s     %s         %-9s   %.2E   ", k, sci(rela).c_str(),
-                    sci(resMax, 2).c_str(), matrix, seconds(iterationStart));
-      Messages::info(buf + contactText);
-    };
-    // CONVERGENCE: every criterion given must hold.
-    const bool criteriaMet = (!settings_.useRela || rela <= settings_.resiGlobRela) &&
-                             (!settings_.useMaxi || resMax <= settings_.resiGlobMaxi) &&
-                             (settings_.useRela || settings_.useMaxi);
-    // With no load at all (a rigid motion imposed, say) the relative residual is
-    // noise over noise: accept a residual at round-off level of the stiffness forces
-    // of displacements of the size the data give. Not of the current ones: a
-    // singular matrix solved anyway (NPREC <= 0, STOP_SINGULIER='NON') gives
-    // displacements of 1e13 whose round-off would hide a residual that does not fall.
-    double kmax = 0;
-    const linalg::SparseMatrix& Kscale = elasticNow ? Kelastic_ : K_;
-    for (int i = 0; i < Kscale.outerSize(); ++i) kmax = std::max(kmax, std::fabs(Kscale.coeff(i, i)));
-    const bool atRoundOff = resMax <= 1e-13 * kmax * dataScale;
-    bool dirichletMet = true;
-    for (const auto& [d, v] : imposed) dirichletMet = dirichletMet && std::fabs(U(d) - v) <= 1e-12 * (1 + std::fabs(v));
-    if (k > 0 && (criteriaMet || atRoundOff) && !statusChanged && dirichletMet) {
-      printRow("");
+    if (!measureResidual(step, it, history, why)) return false;
+    const Verdict verdict = convergence(U, step, it);
+    if (verdict == Verdict::Converged) {
+      report(it, "");
       stats_.iterations += k;
-      finishStep(U, Ustart, t1 - t0);
+      finishStep(U, step.Ustart, t1 - t0);
+      for (NewtonObserver* o : observers_) o->stepConverged(t1, k, true);
       return true;
     }
-    if (k >= settings_.iterGlobMaxi) {
-      printRow("");
+    if (verdict == Verdict::Exhausted) {
+      report(it, "");
       why = "no convergence in ITER_GLOB_MAXI = " + std::to_string(settings_.iterGlobMaxi) + " Newton iterations (" +
-            (settings_.useRela ? "RESI_GLOB_RELA = " + sci(rela, 3) + (settings_.useMaxi ? ", " : "") : "") +
-            (settings_.useMaxi ? "RESI_GLOB_MAXI = " + sci(resMax, 3) : "") + ")";
+            (settings_.useRela ? "RESI_GLOB_RELA = " + sci(it.rela, 3) + (settings_.useMaxi ? ", " : "") : "") +
+            (settings_.useMaxi ? "RESI_GLOB_MAXI = " + sci(it.resMax, 3) : "") + ")";
       stats_.iterations += k;
-      if (!settings_.arret && dirichletMet) {
+      if (!settings_.arret && it.dirichletMet) {
         // CONVERGENCE/ARRET='NON': the step is kept as it is.
         Messages::alarm("STAT_NON_LINE", "instant " + sci(t1) + ": " + why +
                                              "; the step is accepted as it is (CONVERGENCE/ARRET='NON')");
-        finishStep(U, Ustart, t1 - t0);
+        finishStep(U, step.Ustart, t1 - t0);
+        for (NewtonObserver* o : observers_) o->stepConverged(t1, k, false);
         return true;
       }
       return false;
     }
-
-    if (residualFirst) assemble(U, t1, true);  // same state: same residual, and now the tangent
-
-    // Newton correction: K dU = -r on the free unknowns, dU = target - U on the fixed ones.
-    const auto solveStart = Clock::now();
-    Eigen::VectorXd dUc = Eigen::VectorXd::Zero(n_);
-    for (int i = 0; i < n_; ++i)
-      if (fixed[i]) dUc(i) = target(i) - U(i);
-    const linalg::SparseMatrix& Kuse = elasticNow ? Kelastic_ : K_;
-    Eigen::VectorXd rhs = -r_;
-    if (dUc.lpNorm<Eigen::Infinity>() > 0) rhs -= Kuse * dUc;
-    const bool refactor = assembleTangent || (elasticNow && factorized_ != Factorized::Elastic) ||
-                          fixed != lastFixed_;
-    if (refactor) {
-      // A tangent is eliminated in place (it is assembled again before it is factorized
-      // again); the elastic matrix, kept for the whole run, is copied first.
-      if (elasticNow) Kmod = Kelastic_;
-      linalg::SparseMatrix& A = elasticNow ? Kmod : K_;
-      A.makeCompressed();
-      const int* outer = A.outerIndexPtr();
-      const int* rows = A.innerIndexPtr();
-      double* values = A.valuePtr();
-      for (int j = 0; j < A.outerSize(); ++j)
-        for (int p = outer[j]; p < outer[j + 1]; ++p)
-          if (fixed[j] || fixed[rows[p]]) values[p] = rows[p] == j ? 1.0 : 0.0;
-      factorized_ = Factorized::None;
-      try {
-        if (!analyzed_) {
-          linalg::chooseBlasThreads(static_cast<int>(A.rows()));
-          solver.analyze(A);
-          analyzed_ = true;
-        }
-        solver.factorize(A);
-      } catch (const linalg::SingularMatrixError& e) {
-        printRow(elasticNow ? "ELASTIQUE" : "TANGENTE");
-        std::string where;
-        const int col = e.column() >= 0 ? e.column() : e.row();
-        if (col >= 0 && col < nm) {
-          const auto& map = system_.dofMap();
-          for (int node = 0; node < map.nodeCount(); ++node)
-            if (map.count(node) && col >= map.first(node) && col < map.first(node) + map.count(node))
-              where = " (unknown " + std::string(col == map.first(node) ? "DX" : "DY") + " of node " +
-                      system_.model().mesh().nodeName(node) + ")";
-        } else if (col >= nm) {
-          where = " (a contact unknown)";
-        }
-        // Surfaces that never meet leave the body free: say how contact stands.
-        if (terms_) where += " (contact: " + terms_->statusText() + ")";
-        throw Error(std::string(e.what()) + where);
-      }
-      ++stats_.factorizations;
-      factorized_ = elasticNow ? Factorized::Elastic : Factorized::Tangent;
-      lastFixed_ = fixed;
-    }
-    for (int i = 0; i < n_; ++i)
-      if (fixed[i]) rhs(i) = dUc(i);
-    Eigen::VectorXd dU;
-    solver.solve(rhs, dU);
-    stats_.solveSeconds += seconds(solveStart);
-    U += dU;
-    printRow(!refactor ? "" : elasticNow ? "ELASTIQUE" : "TANGENTE");
-    statusChanged = terms_ ? terms_->updateStatus(U) : false;
+    if (it.residualFirst) assemble(U, t1, true);  // same state: same residual, and now the tangent
+    factorAndSolve(U, step, it);
+    report(it, !it.refactored ? "" : it.elastic ? "ELASTIQUE" : "TANGENTE");
+    step.statusChanged = terms_ ? terms_->updateStatus(U) : false;
   }
+}
+
+// The matrix of this iteration: the elastic one, or the tangent at U assembled now, or the
+// factorization kept from before (REAC_ITER, REAC_INCR).
+void StaticNonlinear::chooseMatrix(const Step& step, const std::vector<double>& history, Iteration& it) const {
+  const int k = it.k;
+  it.elastic = settings_.elasticMatrix;
+  it.assembleTangent = false;
+  if (k == 0 && settings_.prediction == Prediction::Elastic) {
+    it.elastic = true;
+  } else if (k == 0 && settings_.prediction == Prediction::Tangent) {
+    it.elastic = false;
+    it.assembleTangent = factorized_ != Factorized::Tangent || steps_ == 0 ||
+                         (settings_.reacIncr > 0 && steps_ % settings_.reacIncr == 0);
+  } else if (!it.elastic) {
+    it.assembleTangent = factorized_ != Factorized::Tangent || k == 0 ||
+                         (settings_.reacIter > 0 && k % settings_.reacIter == 0);
+  }
+  // Near convergence the tangent is often not needed: Newton converges quadratically, so a
+  // relative residual below the square root of RESI_GLOB_RELA is usually followed by a
+  // converged one. The residual is then assembled alone first (a fifth of the cost of
+  // residual and tangent), and the tangent only if the iteration goes on (SVK square:
+  // 5 of 20 tangent assemblies saved). Not before the third iteration: the first one's
+  // residual is the previous instant's (imposed displacements enter with the first
+  // correction) and says nothing of the coming one.
+  it.residualFirst = it.assembleTangent && k >= 2 && !step.statusChanged && settings_.useRela &&
+                     !settings_.useMaxi && history.back() <= std::sqrt(settings_.resiGlobRela);
+}
+
+// The residual at U (and the tangent, as chosen), and the elastic matrix the first time it serves.
+void StaticNonlinear::assembleIteration(const Eigen::VectorXd& U, const Step& step, Iteration& it) {
+  assemble(U, step.t1, it.assembleTangent && !it.residualFirst);
+  if (it.elastic && Kelastic_.size() == 0) {
+    Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
+    Eigen::VectorXd keepFint = fint_, keepFext = fext_, keepR = r_;
+    assemble(zero, step.t1, true);
+    Kelastic_ = K_;
+    fint_ = keepFint;
+    fext_ = keepFext;
+    r_ = keepR;
+  }
+}
+
+// The fixed unknowns: imposed displacements, and what the terms fix.
+void StaticNonlinear::fixUnknowns(Step& step) const {
+  std::fill(step.fixed.begin(), step.fixed.end(), 0);
+  for (const auto& [d, v] : step.imposed) {
+    step.fixed[d] = 1;
+    step.target(d) = v;
+  }
+  if (terms_) {
+    std::vector<int> extra;
+    terms_->fixedUnknowns(extra);
+    for (int d : extra) {
+      step.fixed[d] = 1;
+      step.target(d) = 0.0;
+    }
+  }
+}
+
+// Residual on the free unknowns, relative to the forces that balance the internal forces
+// (external loads plus support reactions), as code_aster. False when it is not a number.
+bool StaticNonlinear::measureResidual(const Step& step, Iteration& it, std::vector<double>& history,
+                                      std::string& why) {
+  const int nm = system_.dofCount();
+  double resMax = 0, denom = 0;
+  for (int i = 0; i < n_; ++i) {
+    if (step.fixed[i]) {
+      if (i < nm) denom = std::max(denom, std::fabs(fint_(i)));
+      continue;
+    }
+    resMax = std::max(resMax, std::fabs(r_(i)));
+    if (i < nm) denom = std::max(denom, std::fabs(r_(i) - fint_(i)));  // the loads that balance fint
+  }
+  if (!std::isfinite(resMax)) {
+    why = "the residual is not a number (the state became invalid)";
+    return false;
+  }
+  it.resMax = resMax;
+  it.rela = denom > 0 ? resMax / denom : resMax;
+  history.push_back(settings_.useRela ? it.rela : resMax);
+  // The observers' contact column says how contact stands when the residual is measured.
+  if (terms_ && !observers_.empty()) it.contact = terms_->statusText();
+  return true;
+}
+
+// CONVERGENCE: every criterion given must hold, after at least one correction, with the
+// imposed values reached and the terms' status settled.
+StaticNonlinear::Verdict StaticNonlinear::convergence(const Eigen::VectorXd& U, const Step& step,
+                                                      Iteration& it) const {
+  const bool criteriaMet = (!settings_.useRela || it.rela <= settings_.resiGlobRela) &&
+                           (!settings_.useMaxi || it.resMax <= settings_.resiGlobMaxi) &&
+                           (settings_.useRela || settings_.useMaxi);
+  // With no load at all (a rigid motion imposed, say) the relative residual is
+  // noise over noise: accept a residual at round-off level of the stiffness forces
+  // of displacements of the size the data give. Not of the current ones: a
+  // singular matrix solved anyway (NPREC <= 0, STOP_SINGULIER='NON') gives
+  // displacements of 1e13 whose round-off would hide a residual that does not fall.
+  double kmax = 0;
+  const linalg::SparseMatrix& Kscale = it.elastic ? Kelastic_ : K_;
+  for (int i = 0; i < Kscale.outerSize(); ++i) kmax = std::max(kmax, std::fabs(Kscale.coeff(i, i)));
+  const bool atRoundOff = it.resMax <= 1e-13 * kmax * step.dataScale;
+  it.dirichletMet = true;
+  for (const auto& [d, v] : step.imposed)
+    it.dirichletMet = it.dirichletMet && std::fabs(U(d) - v) <= 1e-12 * (1 + std::fabs(v));
+  if (it.k > 0 && (criteriaMet || atRoundOff) && !step.statusChanged && it.dirichletMet) return Verdict::Converged;
+  if (it.k >= settings_.iterGlobMaxi) return Verdict::Exhausted;
+  return Verdict::Iterate;
+}
+
+// Rows and columns of the fixed unknowns replaced by the identity's (a symmetric matrix stays symmetric).
+void StaticNonlinear::eliminateFixedUnknowns(linalg::SparseMatrix& A, const std::vector<char>& fixed) const {
+  A.makeCompressed();
+  const int* outer = A.outerIndexPtr();
+  const int* rows = A.innerIndexPtr();
+  double* values = A.valuePtr();
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (int p = outer[j]; p < outer[j + 1]; ++p)
+      if (fixed[j] || fixed[rows[p]]) values[p] = rows[p] == j ? 1.0 : 0.0;
+}
+
+// Newton correction: K dU = -r on the free unknowns, dU = target - U on the fixed ones;
+// the matrix is eliminated and factorized again when it changed.
+void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Iteration& it) {
+  const auto solveStart = Clock::now();
+  linalg::LinearSolver& solver = *solver_->solver;
+  Eigen::VectorXd dUc = Eigen::VectorXd::Zero(n_);
+  for (int i = 0; i < n_; ++i)
+    if (step.fixed[i]) dUc(i) = step.target(i) - U(i);
+  const linalg::SparseMatrix& Kuse = it.elastic ? Kelastic_ : K_;
+  Eigen::VectorXd rhs = -r_;
+  if (dUc.lpNorm<Eigen::Infinity>() > 0) rhs -= Kuse * dUc;
+  it.refactored = it.assembleTangent || (it.elastic && factorized_ != Factorized::Elastic) ||
+                  step.fixed != lastFixed_;
+  if (it.refactored) {
+    // A tangent is eliminated in place (it is assembled again before it is factorized
+    // again); the elastic matrix, kept for the whole run, is copied first.
+    if (it.elastic) KelasticEliminated_ = Kelastic_;
+    linalg::SparseMatrix& A = it.elastic ? KelasticEliminated_ : K_;
+    eliminateFixedUnknowns(A, step.fixed);
+    factorized_ = Factorized::None;
+    try {
+      if (!analyzed_) {
+        linalg::chooseBlasThreads(static_cast<int>(A.rows()));
+        solver.analyze(A);
+        analyzed_ = true;
+      }
+      solver.factorize(A);
+    } catch (const linalg::SingularMatrixError& e) {
+      report(it, it.elastic ? "ELASTIQUE" : "TANGENTE");
+      throwSingular(e);
+    }
+    ++stats_.factorizations;
+    factorized_ = it.elastic ? Factorized::Elastic : Factorized::Tangent;
+    lastFixed_ = step.fixed;
+  }
+  for (int i = 0; i < n_; ++i)
+    if (step.fixed[i]) rhs(i) = dUc(i);
+  Eigen::VectorXd dU;
+  solver.solve(rhs, dU);
+  stats_.solveSeconds += seconds(solveStart);
+  U += dU;
+}
+
+// The solver's message, with the unknown it names and, with contact, how contact stands.
+void StaticNonlinear::throwSingular(const linalg::SingularMatrixError& e) const {
+  const int nm = system_.dofCount();
+  std::string where;
+  const int col = e.column() >= 0 ? e.column() : e.row();
+  if (col >= 0 && col < nm) {
+    const auto& map = system_.dofMap();
+    for (int node = 0; node < map.nodeCount(); ++node)
+      if (map.count(node) && col >= map.first(node) && col < map.first(node) + map.count(node))
+        where = " (unknown " + std::string(col == map.first(node) ? "DX" : "DY") + " of node " +
+                system_.model().mesh().nodeName(node) + ")";
+  } else if (col >= nm) {
+    where = " (a contact unknown)";
+  }
+  // Surfaces that never meet leave the body free: say how contact stands.
+  if (terms_) where += " (contact: " + terms_->statusText() + ")";
+  throw Error(std::string(e.what()) + where);
+}
+
+// Tells the observers the iteration is done; `matrix`: what it factorized.
+void StaticNonlinear::report(const Iteration& it, const char* matrix) const {
+  if (observers_.empty()) return;
+  NewtonIteration done;
+  done.time = it.time;
+  done.index = it.k;
+  done.rela = it.rela;
+  done.maxi = it.resMax;
+  done.matrix = matrix;
+  done.seconds = seconds(it.start);
+  done.contact = it.contact;
+  for (NewtonObserver* o : observers_) o->iterationDone(done);
 }
 
 void StaticNonlinear::finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt) {
@@ -320,6 +399,7 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
     Messages::alarm("STAT_NON_LINE", "instant " + sci(t1) + ": " + why + "; the step [" + sci(t0, 4) + ", " +
                                          sci(t1, 4) + "] is cut into " + std::to_string(settings_.subdPas) +
                                          " (level " + std::to_string(level + 1) + ")");
+    for (NewtonObserver* o : observers_) o->stepCut(t0, t1, settings_.subdPas, level + 1, why);
     for (int i = 1; i <= settings_.subdPas; ++i) {
       const double a = t0 + (t1 - t0) * (i - 1) / settings_.subdPas;
       const double b = (i == settings_.subdPas) ? t1 : t0 + (t1 - t0) * i / settings_.subdPas;

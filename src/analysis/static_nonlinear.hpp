@@ -3,16 +3,24 @@
 // displacements eliminated (rows and columns replaced by the identity, which
 // keeps a symmetric tangent symmetric), and automatic step cutting on failure
 // (DEFI_LIST_INST's ECHEC: SUBD_PAS sub-steps, at most SUBD_NIVEAU levels).
+//
+// Each Newton iteration runs the same stages, each a member function below: choose the
+// matrix (tangent, elastic, or the factorization kept), assemble, fix the unknowns
+// (imposed displacements and what the additional terms fix), measure the residual, test
+// convergence, eliminate the fixed unknowns from the matrix, factor and solve, report.
+// Reporting is telling the observers (newton_observer.hpp): the convergence table is one.
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "analysis/additional_terms.hpp"
-#include "linalg/linear_solver.hpp"
 #include "analysis/mechanical_system.hpp"
+#include "analysis/newton_observer.hpp"
+#include "linalg/linear_solver.hpp"
 
 namespace aster::analysis {
 
@@ -39,7 +47,10 @@ struct NewtonSettings {
   int nprec = 8;               // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
   int subdPas = 4;     // SUBD_PAS
   int subdNiveau = 3;  // SUBD_NIVEAU (0: no cutting)
-  bool print = true;   // the convergence table
+  // The convergence table on standard output, installed by the driver as its first
+  // observer: for programs that drive StaticNonlinear directly (tests, benchmarks).
+  // STAT_NON_LINE installs its own ConvergenceTable.
+  bool print = false;
 };
 
 struct ConvergedInstant {
@@ -61,6 +72,10 @@ class StaticNonlinear {
  public:
   StaticNonlinear(const MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings);
 
+  // Observers are told of every step and iteration in the order they were added; they
+  // must outlive the driver's run().
+  void addObserver(NewtonObserver& observer) { observers_.push_back(&observer); }
+
   // Runs from U (the state at times[0]) through every later instant; calls
   // `converged` after each. Throws aster::Error naming the instant that failed;
   // instants converged before stay reported.
@@ -73,8 +88,20 @@ class StaticNonlinear {
   const linalg::LinearSolverStatistics& solverStatistics() const;
 
  private:
-  struct Attempt;
+  struct Step;       // what one step's iterations share
+  struct Iteration;  // what one iteration's stages share
+  enum class Verdict { Iterate, Converged, Exhausted };
   bool solveStep(Eigen::VectorXd& U, double t0, double t1, std::vector<double>& history, std::string& why);
+  // The stages of an iteration, in their order.
+  void chooseMatrix(const Step& step, const std::vector<double>& history, Iteration& it) const;
+  void assembleIteration(const Eigen::VectorXd& U, const Step& step, Iteration& it);
+  void fixUnknowns(Step& step) const;
+  bool measureResidual(const Step& step, Iteration& it, std::vector<double>& history, std::string& why);
+  Verdict convergence(const Eigen::VectorXd& U, const Step& step, Iteration& it) const;
+  void eliminateFixedUnknowns(linalg::SparseMatrix& A, const std::vector<char>& fixed) const;
+  void factorAndSolve(Eigen::VectorXd& U, const Step& step, Iteration& it);
+  void report(const Iteration& it, const char* matrix) const;
+  [[noreturn]] void throwSingular(const linalg::SingularMatrixError& e) const;
   void finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt);
   void buildPattern();
   void assemble(const Eigen::VectorXd& U, double t, bool withMatrix);
@@ -86,6 +113,7 @@ class StaticNonlinear {
   std::unique_ptr<fem::AssemblyPattern> pattern_;
   int termsFirstElement_ = 0;
   linalg::SparseMatrix K_, Kelastic_;
+  linalg::SparseMatrix KelasticEliminated_;  // Kelastic_ with the fixed unknowns eliminated
   Eigen::VectorXd fint_, fext_, r_;
   NewtonStatistics stats_;
   struct SolverHolder;
@@ -99,6 +127,8 @@ class StaticNonlinear {
   Eigen::VectorXd previousIncrement_;
   double previousDt_ = 0;
   int steps_ = 0;
+  std::vector<NewtonObserver*> observers_;
+  std::unique_ptr<NewtonObserver> table_;  // settings.print's
 };
 
 }  // namespace aster::analysis

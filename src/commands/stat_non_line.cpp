@@ -1,4 +1,7 @@
 // STAT_NON_LINE: quasi-static nonlinear analysis (Newton) over a list of instants.
+// The operator reads (the problem, the driver's settings, the initial state, the
+// instants), builds (the system, the contact terms, the driver with its convergence
+// table), runs, storing each converged instant as it comes, and reports.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +18,7 @@
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "lang/operators.hpp"
+#include "analysis/convergence_table.hpp"
 #include "analysis/static_nonlinear.hpp"
 
 namespace aster::lang {
@@ -65,7 +69,10 @@ std::vector<double> instantsOf(const Keywords& inc, int& subdPas, int& subdNivea
   return out;
 }
 
-ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
+// COMPORTEMENT, EXCIT: the problem (model, materials, behaviour per cell, loads). `keep`
+// holds the loads the problem points to.
+analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
+                                        std::vector<std::shared_ptr<LoadConcept>>& keep) {
   auto model = static_cast<ModelConcept&>(*k.conceptPtr("MODELE")).model;
   const auto& mesh = model->mesh();
   analysis::MechanicalProblem problem;
@@ -84,7 +91,6 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   }
   for (int c : model->cells()) problem.kinematics.push_back(byCell[c]);
 
-  std::vector<std::shared_ptr<LoadConcept>> keep;
   for (const auto& occ : k.factor("EXCIT")) {
     auto load = std::static_pointer_cast<LoadConcept>(occ.conceptPtr("CHARGE"));
     if (load->model != model) throw Error(occ.path + ": CHARGE was defined on another MODELE");
@@ -115,7 +121,11 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     problem.loads.push_back(applied);
     keep.push_back(load);
   }
+  return problem;
+}
 
+// NEWTON, CONVERGENCE, SOLVEUR: the driver's settings (the step cutting comes with the instants).
+analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   analysis::NewtonSettings settings;
   const auto& newton = k.factor("NEWTON").front();
   const std::string matrice = newton.text("MATRICE", "TANGENTE");
@@ -138,53 +148,133 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   settings.method = solveur.text("METHODE", "MULT_FRONT");
   settings.renum = solveur.text("RENUM", "AUTO");
   settings.nprec = solveur.text("STOP_SINGULIER", "OUI") == "NON" ? 0 : static_cast<int>(solveur.integer("NPREC"));
-  settings.print = k.integer("INFO") >= 1;
+  return settings;
+}
 
-  // ETAT_INIT: the state to start from (and, for EVOL_NOLI, the initial instant).
-  const ResultInstant* initial = nullptr;
-  const NodalFieldConcept* initialField = nullptr;
+// ETAT_INIT: the state to start from, an instant of an EVOL_NOLI or a DEPL field (or neither).
+struct InitialState {
+  const ResultInstant* instant = nullptr;  // EVOL_NOLI's (it gives the initial instant too)
+  const NodalFieldConcept* field = nullptr;  // DEPL's
+};
+
+InitialState readInitialState(const Keywords& k, Session& session, const model::Model& model, const ConceptPtr& reuse) {
+  InitialState state;
   if (k.has("ETAT_INIT")) {
     const auto& init = k.factor("ETAT_INIT").front();
     if (init.has("EVOL_NOLI")) {
       const auto& prev = static_cast<ResultConcept&>(*init.conceptPtr("EVOL_NOLI"));
-      if (prev.model->meshPtr() != model->meshPtr())
+      if (prev.model->meshPtr() != model.meshPtr())
         throw Error("ETAT_INIT/EVOL_NOLI was computed on another mesh than MODELE's");
       try {
-        initial = &instantOf(prev, init);
+        state.instant = &instantOf(prev, init);
       } catch (const Error& e) {
         throw Error("ETAT_INIT: " + std::string(e.what()));
       }
     } else {
-      initialField = dynamic_cast<const NodalFieldConcept*>(init.conceptPtr("DEPL").get());
-      if (!initialField || isFunctionField(*initialField))
+      state.field = dynamic_cast<const NodalFieldConcept*>(init.conceptPtr("DEPL").get());
+      if (!state.field || isFunctionField(*state.field))
         throw Error("ETAT_INIT/DEPL: " + session.nameOf(*init.conceptPtr("DEPL")) + " is not a field of real nodal values");
-      if (initialField->mesh != model->meshPtr())
+      if (state.field->mesh != model.meshPtr())
         throw Error("ETAT_INIT/DEPL: the field is defined on another mesh than MODELE's");
     }
   } else if (reuse) {
     throw Error("reuse=: STAT_NON_LINE continues a result from a state; give ETAT_INIT = {EVOL_NOLI = " +
                 session.nameOf(*reuse) + "} (its last instant, or INST / NUME_ORDRE)");
   }
-  const double initialTime = initial ? initial->time : 0.0;
-  const auto times = instantsOf(k.factor("INCREMENT").front(), settings.subdPas, settings.subdNiveau,
-                                initial ? &initialTime : nullptr);
+  return state;
+}
 
+// The displacement unknowns of U from the initial state's DEPL (U stays zero without one).
+void setInitialUnknowns(const InitialState& state, const analysis::MechanicalSystem& system, Eigen::VectorXd& U) {
+  if (!state.instant && !state.field) return;
+  const auto& depl = state.instant ? ResultConcept::nodalField(*state.instant, "DEPL") : state.field->field;
+  const int nc = static_cast<int>(depl.components.size());
+  const int cx = componentIndex(depl, "DX", "ETAT_INIT/DEPL"), cy = componentIndex(depl, "DY", "ETAT_INIT/DEPL");
+  for (int n = 0; n < system.model().mesh().nodeCount(); ++n)
+    for (int c = 0; c < 2; ++c)
+      if (system.dof(n, c) >= 0) U(system.dof(n, c)) = depl.values[n * nc + (c == 0 ? cx : cy)];
+}
+
+// A nodal field of components DX, DY from a vector over the unknowns (0 where a node has none).
+mesh::NodalField nodalField(const std::string& name, const analysis::MechanicalSystem& system,
+                            const Eigen::VectorXd& values) {
+  const int nodes = system.model().mesh().nodeCount();
+  mesh::NodalField f{name, {"DX", "DY"}, std::vector<double>(2 * nodes, 0.0)};
+  for (int n = 0; n < nodes; ++n)
+    for (int c = 0; c < 2; ++c)
+      if (system.dof(n, c) >= 0) f.values[2 * n + c] = values(system.dof(n, c));
+  return f;
+}
+
+// The fields of a state stored in the result: DEPL (with the terms' own unknowns),
+// REAC_NODA, FORC_NODA, the terms' fields, SIEF_ELGA. The initial state has no reactions
+// (reactions null) and no terms' fields: it was not computed.
+ResultInstant resultInstant(const analysis::MechanicalSystem& system, const analysis::AdditionalTerms* terms,
+                            double time, const Eigen::VectorXd& U, const Eigen::VectorXd& internalForces,
+                            const Eigen::VectorXd* reactions) {
+  ResultInstant inst;
+  inst.time = time;
+  mesh::NodalField depl = nodalField("DEPL", system, U);
+  if (terms) terms->extendDisplacement(U, depl);
+  inst.nodal.push_back(std::move(depl));
+  if (reactions) inst.nodal.push_back(nodalField("REAC_NODA", system, *reactions));
+  inst.nodal.push_back(nodalField("FORC_NODA", system, internalForces));
+  if (terms && reactions) terms->outputFields(U, inst.nodal);
+  GaussField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, system.model().cells(), {}, {}};
+  system.gaussStresses(U, sief.offsets, sief.values);
+  inst.gauss.push_back(std::move(sief));
+  return inst;
+}
+
+// The run's figures; INFO >= 2 adds the linear solver's.
+void reportStatistics(const analysis::StaticNonlinear& newtonSolver, const analysis::NewtonSettings& settings,
+                      std::size_t instants, long long info) {
+  const auto& st = newtonSolver.statistics();
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "STAT_NON_LINE: %zu instants, %d Newton iterations, %d factorizations, %d step cuts; "
+                "%d unknowns; %.3f s (assembly %.3f s, linear solver %.3f s)",
+                instants, st.iterations, st.factorizations, st.cuts, newtonSolver.unknownCount(),
+                st.totalSeconds, st.assemblySeconds, st.solveSeconds);
+  Messages::info(buf);
+  if (info >= 2) {
+    const auto& ls = newtonSolver.solverStatistics();
+    char flops[48] = "flops not reported";
+    if (ls.factorFlops >= 0) std::snprintf(flops, sizeof flops, "%.4g flops", ls.factorFlops);
+    std::snprintf(buf, sizeof buf,
+                  "STAT_NON_LINE: linear solver %s, RENUM='%s' (ordering used: %s), %d factorizations "
+                  "(%.3f s), %lld nonzeros in the last factors, %s",
+                  settings.method.c_str(), settings.renum.c_str(), ls.ordering.empty() ? "not reported" : ls.ordering.c_str(),
+                  ls.factorizeCount, ls.factorizeSeconds, ls.factorNonzeros, flops);
+    Messages::info(buf);
+  }
+}
+
+ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
+  // Read: the problem, the driver's settings, the initial state, the instants.
+  std::vector<std::shared_ptr<LoadConcept>> keep;
+  analysis::MechanicalProblem problem = readProblem(k, session, keep);
+  const auto model = static_cast<ModelConcept&>(*k.conceptPtr("MODELE")).model;
+  const auto& mesh = model->mesh();
+  analysis::NewtonSettings settings = readNewtonSettings(k);
+  const InitialState initial = readInitialState(k, session, *model, reuse);
+  const double initialTime = initial.instant ? initial.instant->time : 0.0;
+  const auto times = instantsOf(k.factor("INCREMENT").front(), settings.subdPas, settings.subdNiveau,
+                                initial.instant ? &initialTime : nullptr);
+
+  // Build: the system, the contact terms, the driver and its convergence table.
   analysis::MechanicalSystem system(problem);
   std::unique_ptr<analysis::AdditionalTerms> terms;
   if (k.has("CONTACT")) terms = static_cast<ContactConcept&>(*k.conceptPtr("CONTACT")).makeTerms(system);
   analysis::StaticNonlinear newtonSolver(system, terms.get(), settings);
+  analysis::ConvergenceTable table(terms != nullptr);
+  if (k.integer("INFO") >= 1) newtonSolver.addObserver(table);
 
+  // The result: continued (reuse) from the initial instant, or new with the initial state.
   std::shared_ptr<ResultConcept> result =
       reuse ? std::static_pointer_cast<ResultConcept>(reuse) : std::make_shared<ResultConcept>(model);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newtonSolver.unknownCount());
-  if (initial || initialField) {
-    const auto& depl = initial ? ResultConcept::nodalField(*initial, "DEPL") : initialField->field;
-    const int nc = static_cast<int>(depl.components.size());
-    const int cx = componentIndex(depl, "DX", "ETAT_INIT/DEPL"), cy = componentIndex(depl, "DY", "ETAT_INIT/DEPL");
-    for (int n = 0; n < mesh.nodeCount(); ++n)
-      for (int c = 0; c < 2; ++c)
-        if (system.dof(n, c) >= 0) U(system.dof(n, c)) = depl.values[n * nc + (c == 0 ? cx : cy)];
-  }
+  setInitialUnknowns(initial, system, U);
   if (reuse) {
     // A restart from an earlier instant replaces what the result held after it.
     const double eps = 1e-6 * std::max(1.0, std::fabs(times.front()));
@@ -192,27 +282,10 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     kept.erase(std::remove_if(kept.begin(), kept.end(), [&](const ResultInstant& i) { return i.time > times.front() + eps; }),
                kept.end());
   } else {
-    // NUME_ORDRE 0: the initial state.
-    ResultInstant first;
-    first.time = times.front();
-    mesh::NodalField depl{"DEPL", {"DX", "DY"}, std::vector<double>(2 * mesh.nodeCount(), 0.0)};
-    for (int n = 0; n < mesh.nodeCount(); ++n)
-      for (int c = 0; c < 2; ++c)
-        if (system.dof(n, c) >= 0) depl.values[2 * n + c] = U(system.dof(n, c));
-    if (terms) terms->extendDisplacement(U, depl);
-    first.nodal.push_back(depl);
-    // The internal forces and stresses of the initial state (zero unless ETAT_INIT).
+    // NUME_ORDRE 0: the initial state, with its internal forces and stresses (zero unless ETAT_INIT).
     Eigen::VectorXd fint, fext;
     system.evaluate(U.head(system.dofCount()), times.front(), fint, fext, nullptr, nullptr);
-    mesh::NodalField forc{"FORC_NODA", {"DX", "DY"}, std::vector<double>(2 * mesh.nodeCount(), 0.0)};
-    for (int n = 0; n < mesh.nodeCount(); ++n)
-      for (int c = 0; c < 2; ++c)
-        if (system.dof(n, c) >= 0) forc.values[2 * n + c] = fint(system.dof(n, c));
-    first.nodal.push_back(std::move(forc));
-    GaussField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, model->cells(), {}, {}};
-    system.gaussStresses(U, sief.offsets, sief.values);
-    first.gauss.push_back(std::move(sief));
-    result->instants.push_back(first);
+    result->instants.push_back(resultInstant(system, terms.get(), times.front(), U, fint, nullptr));
   }
 
   // Every instant goes to disk as soon as it is in the result.
@@ -230,30 +303,11 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   }
   Messages::info("STAT_NON_LINE: each converged instant is written to " + archive.path().string());
 
+  // Run: each converged instant is stored as it comes.
   auto store = [&](const analysis::ConvergedInstant& c) {
-    ResultInstant inst;
+    ResultInstant inst = resultInstant(system, terms.get(), c.time, *c.U, *c.internalForces, c.reactions);
     inst.index = static_cast<int>(result->instants.size());
-    inst.time = c.time;
     inst.newtonIterations = c.iterations;
-    mesh::NodalField depl{"DEPL", {"DX", "DY"}, std::vector<double>(2 * mesh.nodeCount(), 0.0)};
-    mesh::NodalField reac{"REAC_NODA", {"DX", "DY"}, std::vector<double>(2 * mesh.nodeCount(), 0.0)};
-    mesh::NodalField forc{"FORC_NODA", {"DX", "DY"}, std::vector<double>(2 * mesh.nodeCount(), 0.0)};
-    for (int n = 0; n < mesh.nodeCount(); ++n)
-      for (int comp = 0; comp < 2; ++comp) {
-        const int d = system.dof(n, comp);
-        if (d < 0) continue;
-        depl.values[2 * n + comp] = (*c.U)(d);
-        reac.values[2 * n + comp] = (*c.reactions)(d);
-        forc.values[2 * n + comp] = (*c.internalForces)(d);
-      }
-    if (terms) terms->extendDisplacement(*c.U, depl);
-    inst.nodal.push_back(std::move(depl));
-    inst.nodal.push_back(std::move(reac));
-    inst.nodal.push_back(std::move(forc));
-    if (terms) terms->outputFields(*c.U, inst.nodal);
-    GaussField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, model->cells(), {}, {}};
-    system.gaussStresses(*c.U, sief.offsets, sief.values);
-    inst.gauss.push_back(std::move(sief));
     archive.add(inst);  // an instant that is not on disk (full disk) is not in the result either
     result->instants.push_back(std::move(inst));
   };
@@ -265,25 +319,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     // The converged instants stay in the result; the study stops here.
     throw Error(e.what() + stored("before the failure"));
   }
-  const auto& st = newtonSolver.statistics();
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "STAT_NON_LINE: %zu instants, %d Newton iterations, %d factorizations, %d step cuts; "
-                "%d unknowns; %.3f s (assembly %.3f s, linear solver %.3f s)",
-                times.size() - 1, st.iterations, st.factorizations, st.cuts, newtonSolver.unknownCount(),
-                st.totalSeconds, st.assemblySeconds, st.solveSeconds);
-  Messages::info(buf);
-  if (k.integer("INFO") >= 2) {
-    const auto& ls = newtonSolver.solverStatistics();
-    char flops[48] = "flops not reported";
-    if (ls.factorFlops >= 0) std::snprintf(flops, sizeof flops, "%.4g flops", ls.factorFlops);
-    std::snprintf(buf, sizeof buf,
-                  "STAT_NON_LINE: linear solver %s, RENUM='%s' (ordering used: %s), %d factorizations "
-                  "(%.3f s), %lld nonzeros in the last factors, %s",
-                  settings.method.c_str(), settings.renum.c_str(), ls.ordering.empty() ? "not reported" : ls.ordering.c_str(),
-                  ls.factorizeCount, ls.factorizeSeconds, ls.factorNonzeros, flops);
-    Messages::info(buf);
-  }
+  reportStatistics(newtonSolver, settings, times.size() - 1, k.integer("INFO"));
   return result;
 }
 

@@ -245,7 +245,7 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
                                           "(missing Dirichlet conditions?)",
                                 col, col);
     }
-    if (mode_ == Mode::Signed)  // dpotrf stops at a negative pivot too, outside the multipliers' fronts
+    if (mode_ == Mode::MultFront)  // dpotrf stops at a negative pivot too, outside the multipliers' fronts
       throwZeroPivot(name(), col, col, " (or negative, where no Lagrange multiplier is: an indefinite stiffness)");
     throwZeroPivot(name(), col, col);
   }

@@ -9,11 +9,11 @@
 //   that a stiffness + constraints system [K B^T; B 0] with K positive definite and B of full
 //   rank factors stably (it is quasi-definite in that order). Other indefinite matrices may
 //   meet a zero pivot, which is reported; use UMFPACK for general symmetric indefinite systems.
-// Mode::Signed: the multifrontal factorization of Mode::Cholesky with signed pivots,
-//   P A P^T = L S L^T, S = diag(+-1), without pivoting (multifrontal_cholesky.hpp): a
-//   positive definite matrix takes exactly the Cholesky path, and a stiffness + Lagrange
-//   multipliers system (constraint rows as for Mode::LDLT) the Cholesky speed. Used by
-//   MULT_FRONT (mult_front_solver.hpp).
+// Mode::MultFront: MULT_FRONT's factorization, the multifrontal one of Mode::Cholesky with
+//   signed pivots, P A P^T = L S L^T, S = diag(+-1), without pivoting
+//   (multifrontal_cholesky.hpp): a positive definite matrix takes exactly the Cholesky path,
+//   and a stiffness + Lagrange multipliers system (constraint rows as for Mode::LDLT) the
+//   Cholesky speed. MultFrontSolver (mult_front_solver.hpp) owns the one solver in this mode.
 #pragma once
 #include <memory>
 
@@ -24,7 +24,7 @@ namespace aster::linalg {
 
 class CholmodSolver : public LinearSolver {
  public:
-  enum class Mode { Cholesky, LDLT, Signed };
+  enum class Mode { Cholesky, LDLT, MultFront };
   explicit CholmodSolver(Mode mode);
   ~CholmodSolver() override;
   CholmodSolver(const CholmodSolver&) = delete;
@@ -38,7 +38,7 @@ class CholmodSolver : public LinearSolver {
   }
   Mode mode() const { return mode_; }
   // RENUM: AUTO (AMD; nested dissection on large matrices), AMD, METIS, SANS (natural).
-  // CHOLMOD_LDLT and Signed with constraint rows always order them last (constrained AMD).
+  // CHOLMOD_LDLT and MULT_FRONT with constraint rows always order them last (constrained AMD).
   std::vector<std::string> orderings() const override { return {"AUTO", "AMD", "METIS", "SANS"}; }
 
   // Relative tolerance of the symmetry check, per pair A(i,j), A(j,i). Default 1e-10.

@@ -5,12 +5,12 @@
 
 namespace aster::linalg {
 
-MultFrontSolver::MultFrontSolver() : signed_(std::make_unique<CholmodSolver>(CholmodSolver::Mode::Signed)) {}
+MultFrontSolver::MultFrontSolver() : multFront_(std::make_unique<CholmodSolver>(CholmodSolver::Mode::MultFront)) {}
 
 MultFrontSolver::~MultFrontSolver() = default;
 
 LinearSolver& MultFrontSolver::active() const {
-  return umfpack_ ? static_cast<LinearSolver&>(*umfpack_) : static_cast<LinearSolver&>(*signed_);
+  return umfpack_ ? static_cast<LinearSolver&>(*umfpack_) : static_cast<LinearSolver&>(*multFront_);
 }
 
 void MultFrontSolver::analyze(const SparseMatrix& A) {
@@ -18,11 +18,11 @@ void MultFrontSolver::analyze(const SparseMatrix& A) {
     umfpack_->setSingularityDigits(nprec_);
     umfpack_->analyze(A);
   } else {
-    signed_->setOrdering(ordering_);
-    signed_->setSingularityDigits(nprec_);
-    signed_->setMultipliersFrom(multipliersFrom_);
-    signed_->setSymmetricByConstruction(symmetricByConstruction_);
-    signed_->analyze(A);
+    multFront_->setOrdering(ordering_);
+    multFront_->setSingularityDigits(nprec_);
+    multFront_->setMultipliersFrom(multipliersFrom_);
+    multFront_->setSymmetricByConstruction(symmetricByConstruction_);
+    multFront_->analyze(A);
   }
   gatherStatistics();
 }
@@ -31,7 +31,7 @@ void MultFrontSolver::factorize(const SparseMatrix& A) {
   active().setSingularityDigits(nprec_);
   if (!umfpack_) {
     try {
-      signed_->factorize(A);
+      multFront_->factorize(A);
       gatherStatistics();
       return;
     } catch (const UnsymmetricMatrixError&) {
@@ -59,7 +59,7 @@ void MultFrontSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const 
 }
 
 void MultFrontSolver::gatherStatistics() const {
-  const LinearSolverStatistics& s = signed_->statistics();
+  const LinearSolverStatistics& s = multFront_->statistics();
   stats_ = umfpack_ ? umfpack_->statistics() : s;
   if (!umfpack_) return;
   stats_.analyzeSeconds += s.analyzeSeconds;

@@ -1,6 +1,6 @@
 // MULT_FRONT, the default of SOLVEUR/METHODE (code_aster's name for its multifrontal
 // LDL^T without pivoting): aster-lite's multifrontal factorization with signed pivots
-// (CholmodSolver::Mode::Signed) for symmetric matrices, positive definite or stiffness +
+// (CholmodSolver::Mode::MultFront, held in multFront_) for symmetric matrices, positive definite or stiffness +
 // Lagrange multipliers (contact, ordered last: setMultipliersFrom). UMFPACK, LU with
 // pivoting, takes over for the rest of the run when a matrix is not symmetric (a follower
 // pressure) or meets a pivot that a factorization without pivoting cannot take (zero, or
@@ -28,7 +28,7 @@ class MultFrontSolver : public LinearSolver {
   std::string name() const override { return "MULT_FRONT"; }
   std::vector<std::string> orderings() const override { return {"AUTO", "AMD", "METIS", "SANS"}; }
 
-  // Why UMFPACK took over; empty while the signed factorization serves.
+  // Why UMFPACK took over; empty while the multifrontal factorization serves.
   const std::string& handedOver() const { return handedOver_; }
 
  private:
@@ -36,7 +36,7 @@ class MultFrontSolver : public LinearSolver {
   void gatherStatistics() const;  // stats_: both solvers' totals, the last one's facts
   LinearSolver& active() const;
 
-  std::unique_ptr<CholmodSolver> signed_;
+  std::unique_ptr<CholmodSolver> multFront_;  // Mode::MultFront
   std::unique_ptr<LinearSolver> umfpack_;  // once handed over
   std::string handedOver_;
 };

@@ -15,7 +15,9 @@
 #include "fem/cell_type.hpp"
 #include "fem/quadrature.hpp"
 #include "fem/shape_functions.hpp"
+#include "analysis/convergence_table.hpp"
 #include "analysis/static_nonlinear.hpp"
+#include "core/error.hpp"
 
 using namespace aster;
 
@@ -31,7 +33,9 @@ struct Outcome {
   analysis::NewtonStatistics statistics;
 };
 
-Outcome solve(int N, mesh::CellType type, mechanics::Kinematics kin, int steps) {
+// observer: told of the run; iterGlobMaxi: ITER_GLOB_MAXI.
+Outcome solve(int N, mesh::CellType type, mechanics::Kinematics kin, int steps,
+              analysis::NewtonObserver* observer = nullptr, int iterGlobMaxi = 20) {
   auto m = std::make_shared<mesh::Mesh>(test_support::squareMesh(N, type));
   auto model = std::make_shared<model::Model>(m);
   std::vector<int> all(m->cellCount());
@@ -69,8 +73,9 @@ Outcome solve(int N, mesh::CellType type, mechanics::Kinematics kin, int steps) 
   analysis::NewtonSettings settings;
   settings.print = false;
   settings.resiGlobRela = 1e-10;
-  settings.iterGlobMaxi = 20;
+  settings.iterGlobMaxi = iterGlobMaxi;
   analysis::StaticNonlinear newton(system, nullptr, settings);
+  if (observer) newton.addObserver(*observer);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newton.unknownCount());
   std::vector<double> times;
   for (int k = 0; k <= steps; ++k) times.push_back(double(k) / steps);
@@ -141,6 +146,122 @@ TEST(StaticNonlinear, SmallStrainIsLinearOneIteration) {
   const Outcome o = solve(4, mesh::CellType::QUAD8, mechanics::Kinematics::SmallStrain, 1);
   ASSERT_EQ(o.residuals.size(), 1u);
   EXPECT_EQ(o.residuals[0].size(), 2u);  // prediction, then converged
+}
+
+// Records what the driver tells its observers.
+struct Recorder : analysis::NewtonObserver {
+  struct Step {
+    double t0, t1;
+    std::vector<analysis::NewtonIteration> iterations;
+    int converged = -1;  // iterations told by stepConverged, -1 if not told
+  };
+  std::vector<Step> steps;
+  struct Cut {
+    double t0, t1;
+    int parts, level;
+    std::string why;
+  };
+  std::vector<Cut> cuts;
+  void stepStarted(double t0, double t1) override { steps.push_back({t0, t1, {}, -1}); }
+  void iterationDone(const analysis::NewtonIteration& it) override { steps.back().iterations.push_back(it); }
+  void stepConverged(double t1, int iterations, bool criteriaMet) override {
+    EXPECT_EQ(t1, steps.back().t1);
+    EXPECT_TRUE(criteriaMet);
+    steps.back().converged = iterations;
+  }
+  void stepCut(double t0, double t1, int parts, int level, const std::string& why) override {
+    cuts.push_back({t0, t1, parts, level, why});
+  }
+};
+
+// The observer sees each step start, one row per iteration with the residual the driver
+// measured (the ConvergedInstant's), the tangent factorized at every iteration but the
+// converged one (REAC_ITER = 1, and the converged iterate factorizes nothing), and the
+// step converge after as many corrections as the instant reports.
+TEST(StaticNonlinear, ObserversAreToldEveryStepAndIteration) {
+  Recorder r;
+  const Outcome o = solve(4, mesh::CellType::QUAD8, mechanics::Kinematics::TotalLagrangianSVK, 2, &r);
+  ASSERT_EQ(r.steps.size(), 2u);
+  EXPECT_TRUE(r.cuts.empty());
+  for (std::size_t s = 0; s < 2; ++s) {
+    const auto& step = r.steps[s];
+    EXPECT_DOUBLE_EQ(step.t0, 0.5 * s);
+    EXPECT_DOUBLE_EQ(step.t1, 0.5 * (s + 1));
+    ASSERT_EQ(step.iterations.size(), o.residuals[s].size());
+    EXPECT_EQ(step.converged, static_cast<int>(o.residuals[s].size()) - 1);
+    for (std::size_t k = 0; k < step.iterations.size(); ++k) {
+      const auto& it = step.iterations[k];
+      EXPECT_EQ(it.index, static_cast<int>(k));
+      EXPECT_EQ(it.time, step.t1);
+      EXPECT_EQ(it.rela, o.residuals[s][k]);  // RESI_GLOB_RELA is the criterion
+      EXPECT_GE(it.maxi, 0.0);
+      EXPECT_GE(it.seconds, 0.0);
+      EXPECT_EQ(it.contact, "");
+      EXPECT_STREQ(it.matrix, k + 1 < step.iterations.size() ? "TANGENTE" : "");
+    }
+  }
+}
+
+// ITER_GLOB_MAXI = 1 cannot converge the nonlinear step (its first correction only brings
+// in the imposed displacements): the failure is told as a cut into SUBD_PAS = 4 sub-steps
+// at level 1, and the first sub-step starts.
+TEST(StaticNonlinear, ObserversAreToldOfStepCuts) {
+  Recorder r;
+  try {
+    solve(4, mesh::CellType::QUAD8, mechanics::Kinematics::TotalLagrangianSVK, 1, &r, 1);
+  } catch (const Error&) {
+    // Sub-steps may fail too: the cuts told before are what is checked.
+  }
+  ASSERT_GE(r.cuts.size(), 1u);
+  EXPECT_EQ(r.cuts[0].t0, 0.0);
+  EXPECT_EQ(r.cuts[0].t1, 1.0);
+  EXPECT_EQ(r.cuts[0].parts, 4);
+  EXPECT_EQ(r.cuts[0].level, 1);
+  EXPECT_NE(r.cuts[0].why.find("ITER_GLOB_MAXI = 1"), std::string::npos) << r.cuts[0].why;
+  // Each first sub-step fails too and is cut in turn, down to SUBD_NIVEAU = 3.
+  ASSERT_EQ(r.cuts.size(), 3u);
+  for (int level = 2; level <= 3; ++level) {
+    const auto& cut = r.cuts[level - 1];
+    EXPECT_EQ(cut.level, level);
+    EXPECT_EQ(cut.t0, 0.0);
+    EXPECT_DOUBLE_EQ(cut.t1, std::pow(0.25, level - 1));
+  }
+  ASSERT_GE(r.steps.size(), 2u);
+  EXPECT_EQ(r.steps[0].converged, -1);  // the whole step failed
+  EXPECT_DOUBLE_EQ(r.steps[1].t0, 0.0);
+  EXPECT_DOUBLE_EQ(r.steps[1].t1, 0.25);
+}
+
+// The table's header and rows, column by column (the layout STAT_NON_LINE's output has).
+TEST(ConvergenceTable, PrintsAHeaderPerStepAndARowPerIteration) {
+  analysis::ConvergenceTable table(true);
+  analysis::NewtonIteration it;
+  it.time = 0.5;
+  it.index = 3;
+  it.rela = 1.5e-3;
+  it.maxi = 2.25e-7;
+  it.matrix = "TANGENTE";
+  it.seconds = 0.0123;
+  it.contact = "9 active nodes";
+  testing::internal::CaptureStdout();
+  table.stepStarted(0.25, 0.5);
+  table.iterationDone(it);
+  it.index = 4;
+  it.matrix = "";
+  table.iterationDone(it);
+  EXPECT_EQ(testing::internal::GetCapturedStdout(),
+            "  Instant 5.000000E-01\n"
+            "    iter  RESI_GLOB_RELA   RESI_GLOB_MAXI   matrix      time (s)   contact\n"
+            "       3  1.500000E-03     2.25E-07         TANGENTE    1.23E-02   9 active nodes\n"
+            "       4  1.500000E-03     2.25E-07                     1.23E-02   9 active nodes\n");
+}
+
+TEST(ConvergenceTable, WithoutContactTheHeaderEndsAfterTheTime) {
+  analysis::ConvergenceTable table(false);
+  testing::internal::CaptureStdout();
+  table.stepStarted(0.0, 1.0);
+  EXPECT_EQ(testing::internal::GetCapturedStdout(),
+            "  Instant 1.000000E+00\n    iter  RESI_GLOB_RELA   RESI_GLOB_MAXI   matrix      time (s)   \n");
 }
 
 struct RateCase {
