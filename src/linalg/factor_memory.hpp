@@ -20,7 +20,8 @@ void keepFactorWorkspaces();
 // When the kernel grants them on request only (transparent_hugepage/enabled = madvise),
 // this asks for them (madvise MADV_HUGEPAGE) on the whole 2 MiB pages inside the block,
 // before it is touched; blocks smaller than 2 MiB are left alone. Nothing is lost when the
-// kernel refuses. Called on the large arrays written once per factorization (the factor).
+// kernel refuses. The programs' malloc calls it on every block (src/huge_page_malloc.cpp);
+// the factor is advised here too, for builds without that malloc (sanitizers, tests).
 void adviseHugePages(void* data, std::size_t bytes);
 
 }  // namespace aster::linalg
