@@ -26,7 +26,7 @@ namespace {
 // Blocks below the mmap threshold come from the heap, which glibc extends with sbrk (and
 // writes a chunk header into the new part, a 4 KiB page that keeps its 2 MiB range out of
 // huge pages). The heap grows by 32 MiB at a time, and each growth is advised at once.
-const int kHeapGrowth = mallopt(M_TOP_PAD, 32 << 20);
+[[maybe_unused]] const int heapGrowthSet = mallopt(M_TOP_PAD, 32 << 20);  // before main()
 
 void adviseHeapGrowth(std::uintptr_t before) {
   const auto after = reinterpret_cast<std::uintptr_t>(sbrk(0));
