@@ -123,8 +123,8 @@ void run(int N, const std::string& method) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  linalg::selectBlasKernels(argv);
-  linalg::selectHugePages(argv);
+  linalg::startBlasOnOneThread();
+  linalg::selectBlasKernels();
   linalg::keepFactorWorkspaces();
   std::vector<int> sizes;
   std::string method = "CHOLMOD";

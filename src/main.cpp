@@ -48,8 +48,8 @@ int usageError(const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  aster::linalg::selectBlasKernels(argv);
-  aster::linalg::selectHugePages(argv);
+  aster::linalg::startBlasOnOneThread();
+  aster::linalg::selectBlasKernels();
   aster::linalg::keepFactorWorkspaces();
   if (const std::string error = aster::linalg::reserveBlasBuffer(); !error.empty()) {
     std::fprintf(stderr, "<F> <aster-lite> %s\n", error.c_str());

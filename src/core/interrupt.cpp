@@ -1,5 +1,6 @@
 #include "core/interrupt.hpp"
 
+#include <pthread.h>
 #include <semaphore.h>
 #include <signal.h>
 #include <unistd.h>
@@ -31,7 +32,7 @@ extern "C" void onSigint(int) {
   errno = saved;
 }
 
-void watchdog() {
+void* watchdog(void*) {
   while (sem_wait(&wakeup) != 0) {
   }
   using Clock = std::chrono::steady_clock;
@@ -70,9 +71,14 @@ void install() {
     sigemptyset(&block);
     sigaddset(&block, SIGINT);
     pthread_sigmask(SIG_BLOCK, &block, &old);
-    std::thread(watchdog).detach();
+    // pthread_create, not std::thread: std::thread puts the thread's state on the heap,
+    // and the process forked to read a MED file would hold it without the thread
+    // (a definite leak for valgrind).
+    pthread_t thread;
+    const bool started = pthread_create(&thread, nullptr, watchdog, nullptr) == 0;
+    if (started) pthread_detach(thread);
     pthread_sigmask(SIG_SETMASK, &old, nullptr);
-    watchdogStarted = true;
+    watchdogStarted = started;
   }
   std::signal(SIGINT, onSigint);
 }

@@ -48,33 +48,53 @@ std::uint64_t osSavedState() {
 }
 #endif
 
-}  // namespace
+std::string lowercase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
 
-void selectBlasKernels(char** argv) {
-#if defined(__x86_64__)
-  if (getenv("OPENBLAS_CORETYPE") || getenv("ASTER_BLAS_SELECTED")) return;
+std::string openblasCore() {
   using TextFunction = char* (*)();
   auto corename = reinterpret_cast<TextFunction>(dlsym(RTLD_DEFAULT, "openblas_get_corename"));
-  if (!corename) return;
-  std::string core = corename();
-  for (char& c : core) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (core != "prescott") return;  // OpenBLAS knew the CPU
+  return corename ? corename() : "";
+}
+
+}  // namespace
+
+const char* betterBlasKernels(const std::string& core) {
+#if defined(__x86_64__)
+  if (lowercase(core) != "prescott") return nullptr;  // OpenBLAS knew the CPU
   const std::uint64_t xcr0 = osSavedState();
-  const char* choice = nullptr;
   if ((xcr0 & 0xe6) == 0xe6 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
       __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq"))
-    choice = "SkylakeX";
-  else if ((xcr0 & 0x6) == 0x6 && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
-    choice = "Haswell";
-  if (!choice) return;
-  setenv("OPENBLAS_CORETYPE", choice, 1);
-  setenv("ASTER_BLAS_SELECTED", "1", 1);  // never loop
-  startBlasOnOneThread();
-  execv("/proc/self/exe", argv);
-  // exec failed: go on with the generic kernels
+    return "SkylakeX";
+  if ((xcr0 & 0x6) == 0x6 && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return "Haswell";
 #else
-  (void)argv;
+  (void)core;
 #endif
+  return nullptr;
+}
+
+bool switchBlasKernels(const char* core) {
+  using Routine = void (*)();
+  auto forget = reinterpret_cast<Routine>(dlsym(RTLD_DEFAULT, "gotoblas_dynamic_quit"));
+  auto start = reinterpret_cast<Routine>(dlsym(RTLD_DEFAULT, "gotoblas_dynamic_init"));
+  if (!forget || !start || openblasCore().empty()) return false;
+  const char* before = getenv("OPENBLAS_CORETYPE");
+  const std::string userValue = before ? before : "";
+  setenv("OPENBLAS_CORETYPE", core, 1);
+  forget();  // the start-up routine does nothing while kernels are chosen
+  start();
+  if (before)
+    setenv("OPENBLAS_CORETYPE", userValue.c_str(), 1);
+  else
+    unsetenv("OPENBLAS_CORETYPE");
+  return lowercase(openblasCore()) == lowercase(core);
+}
+
+void selectBlasKernels() {
+  if (getenv("OPENBLAS_CORETYPE")) return;  // the user's choice
+  if (const char* better = betterBlasKernels(openblasCore())) switchBlasKernels(better);
 }
 
 namespace {
@@ -95,37 +115,34 @@ const BlasThreadCount& blasThreads() {
   return count;
 }
 
-// Set by startBlasOnOneThread for the re-executed process: the count OpenBLAS chose before.
-constexpr const char* kChosenThreads = "ASTER_BLAS_THREADS";
+bool userChoseBlasThreads() { return getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS"); }
 
-bool userChoseBlasThreads() {
-  return (getenv("OPENBLAS_NUM_THREADS") || getenv("OMP_NUM_THREADS")) && !getenv(kChosenThreads);
+// After blas_thread_shutdown_, openblas_set_num_threads creates the workers again whatever
+// the count asked, one included: it is called only when the count changes.
+void setBlasThreads(const BlasThreadCount& blas, int threads) {
+  if (blas.get() != threads) blas.set(threads);
 }
 }  // namespace
-
-void startBlasOnOneThread() {
-  const BlasThreadCount& blas = blasThreads();
-  if (!blas.get || userChoseBlasThreads() || getenv(kChosenThreads)) return;
-  setenv(kChosenThreads, std::to_string(blas.get()).c_str(), 1);
-  setenv("OPENBLAS_NUM_THREADS", "1", 1);
-}
 
 int startupBlasThreads() {
   const BlasThreadCount& blas = blasThreads();
   if (!blas.get) return 1;
-  // Read once, before any change to the count.
-  static const int count = [&] {
-    const char* chosen = getenv(kChosenThreads);
-    const int n = chosen ? std::atoi(chosen) : 0;
-    return n > 0 ? n : blas.get();
-  }();
+  static const int count = blas.get();  // read once, before any change to the count
   return count;
+}
+
+void startBlasOnOneThread() {
+  const BlasThreadCount& blas = blasThreads();
+  if (!blas.get || userChoseBlasThreads() || startupBlasThreads() <= 1) return;
+  blas.set(1);
+  using Routine = void (*)();
+  if (auto stopWorkers = reinterpret_cast<Routine>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_"))) stopWorkers();
 }
 
 void chooseBlasThreads(int unknowns) {
   const BlasThreadCount& blas = blasThreads();
   if (!blas.get || userChoseBlasThreads()) return;
-  blas.set(unknowns < kSmallSystem ? 1 : blasCallersThatFit(startupBlasThreads()));
+  setBlasThreads(blas, unknowns < kSmallSystem ? 1 : blasCallersThatFit(startupBlasThreads()));
 }
 
 namespace {
@@ -183,11 +200,11 @@ ScopedBlasThreads::ScopedBlasThreads(int threads) {
   const BlasThreadCount& blas = blasThreads();
   if (!blas.get) return;
   previous_ = blas.get();
-  if (previous_ != threads) blas.set(threads);
+  setBlasThreads(blas, threads);
 }
 
 ScopedBlasThreads::~ScopedBlasThreads() {
-  if (previous_ > 0 && previous_ != blasThreads().get()) blasThreads().set(previous_);
+  if (previous_ > 0) setBlasThreads(blasThreads(), previous_);
 }
 
 }  // namespace aster::linalg

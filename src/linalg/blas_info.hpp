@@ -19,10 +19,22 @@ BlasInfo blasInUse();
 // OpenBLAS built for several CPUs (Debian's) picks its kernels from the CPU model; a model
 // newer than the library (Debian 12's 0.3.21 on Sapphire/Emerald Rapids) falls back to the
 // generic SSE3 "Prescott" kernels, 5x slower. When that happened, OPENBLAS_CORETYPE is unset
-// and the CPU and the OS support AVX-512 (or AVX2), this sets OPENBLAS_CORETYPE to SkylakeX
-// (or Haswell) and re-executes the program with the same arguments, since OpenBLAS reads the
-// variable when it is loaded. Returns only when nothing is to be done or exec failed.
-void selectBlasKernels(char** argv);
+// and the CPU and the OS support AVX-512 (or AVX2), this switches OpenBLAS to its SkylakeX
+// (or Haswell) kernels in the running process (switchBlasKernels). Call it before any BLAS
+// call, while no other thread uses the BLAS (first thing in main()).
+void selectBlasKernels();
+
+// The kernels selectBlasKernels gives a library that reports `core`: "SkylakeX" or "Haswell"
+// when `core` is Prescott and this CPU and its OS run AVX-512 (or AVX2 + FMA), null otherwise.
+const char* betterBlasKernels(const std::string& core);
+
+// Makes OpenBLAS use the kernels of `core` (a name OPENBLAS_CORETYPE accepts). OpenBLAS
+// reads OPENBLAS_CORETYPE only in its start-up routine (gotoblas_dynamic_init, exported by
+// the builds for several CPUs); this runs that routine again with the variable set, then
+// restores the environment as it was (no child process inherits the variable). Returns
+// whether OpenBLAS now reports `core`; false without that routine (another BLAS, or an
+// OpenBLAS built for one CPU). Same conditions as selectBlasKernels.
+bool switchBlasKernels(const char* core);
 
 // One BLAS thread for factorizations of fewer than kSmallSystem unknowns, the
 // BLAS's own count (all cores) for larger ones. The dense blocks of a small
@@ -36,15 +48,16 @@ void chooseBlasThreads(int unknowns);
 // OpenBLAS creates its worker threads when it is loaded, and an idle worker spins
 // (sched_yield) for a while before it sleeps: on two cores it slows whatever the
 // program does first (loading libmedC in ssnp150a: 32 -> 19 ms). The default
-// solver needs no BLAS thread (multifrontal_cholesky.cpp), so a process about to
-// re-execute itself (selectBlasKernels, selectHugePages) calls this: the new
-// process starts OpenBLAS on one thread (OPENBLAS_NUM_THREADS=1) and
-// chooseBlasThreads still gives large systems the count OpenBLAS had chosen,
-// creating the workers then. Nothing when the user chose the count.
+// solver needs no BLAS thread (multifrontal_cholesky.cpp), so main() calls this
+// first: it records the count OpenBLAS chose (startupBlasThreads), sets one thread
+// and stops the workers (blas_thread_shutdown_, OpenBLAS's own routine for fork);
+// OpenBLAS creates them again when chooseBlasThreads asks for more than one thread
+// (large systems). Nothing when the user chose the count (OPENBLAS_NUM_THREADS,
+// OMP_NUM_THREADS) or when the BLAS is not OpenBLAS. The environment is not touched.
 void startBlasOnOneThread();
 
-// The count OpenBLAS chose when the program was started (in the first process when
-// startBlasOnOneThread re-executed it): all cores unless the user set it; 1 for another BLAS.
+// The count OpenBLAS chose when it was loaded (before startBlasOnOneThread): all cores
+// unless the user set it; 1 for another BLAS.
 int startupBlasThreads();
 
 // OpenBLAS (Debian 12's 0.3.21) maps a 128 MiB work buffer for each BLAS call in flight

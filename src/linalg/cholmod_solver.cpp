@@ -13,6 +13,7 @@
 
 #include "linalg/blas_info.hpp"
 #include "linalg/cholmod_views.hpp"
+#include "linalg/factor_memory.hpp"
 #include "linalg/pivot_audit.hpp"
 #include "linalg/stopwatch.hpp"
 
@@ -196,6 +197,7 @@ void CholmodSolver::planMultifrontal(const SparseMatrix& A, const std::vector<in
   if (!L->is_super) throw Error(name() + ": the analysis did not produce a supernodal factor");
   if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, &c) || !L->x)
     throw Error(name() + ": cannot allocate the factor: " + cholmodStatus(c.status));
+  adviseHugePages(L->x, L->xsize * sizeof(double));  // written whole at every factorization
   const SupernodalStructure structure = supernodalStructure(*L);
   int threads = 1;
 #ifdef _OPENMP

@@ -1,13 +1,9 @@
 #include "linalg/factor_memory.hpp"
 
 #include <malloc.h>
-#include <stdlib.h>
-#include <unistd.h>
+#include <sys/mman.h>
 
-#include <fstream>
-#include <string>
-
-#include "linalg/blas_info.hpp"
+#include <cstdint>
 
 namespace aster::linalg {
 
@@ -17,20 +13,12 @@ void keepFactorWorkspaces() {
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
 }
 
-void selectHugePages(char** argv) {
-  if (getenv("ASTER_BLAS_SELECTED")) return;
-  const char* current = getenv("GLIBC_TUNABLES");
-  std::string tunables = current ? current : "";
-  if (tunables.find("glibc.malloc.hugetlb") != std::string::npos) return;
-  std::ifstream thp("/sys/kernel/mm/transparent_hugepage/enabled");
-  std::string modes;
-  std::getline(thp, modes);
-  if (modes.find("[madvise]") == std::string::npos) return;  // always: nothing to ask; never: no use
-  tunables += std::string(tunables.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
-  setenv("GLIBC_TUNABLES", tunables.c_str(), 1);
-  startBlasOnOneThread();
-  execv("/proc/self/exe", argv);
-  // exec failed: go on with 4 KiB pages
+void adviseHugePages(void* data, std::size_t bytes) {
+  constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
+  const auto start = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
+  const std::uintptr_t end = (start + bytes) & ~(kHugePage - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
 }
 
 }  // namespace aster::linalg

@@ -5,6 +5,7 @@
 // a fresh mapping: three quarters of the linear-solver time of the SSNP150
 // studies (16 ms a factorization of 8 Mflop, 5 ms after this).
 #pragma once
+#include <cstddef>
 
 namespace aster::linalg {
 
@@ -15,14 +16,12 @@ namespace aster::linalg {
 void keepFactorWorkspaces();
 
 // Memory touched for the first time costs a page fault per 4 KiB page: about 10 us on the
-// virtual machines this runs on (2.8 s per GiB), 157 000 faults in the SVK square benchmark
-// at N = 256. glibc's allocator asks for transparent huge pages (2 MiB, one fault each) when
-// the tunable glibc.malloc.hugetlb=1 is set, which glibc reads only when a program starts:
-// when the kernel grants huge pages on request (transparent_hugepage/enabled = madvise) and
-// GLIBC_TUNABLES does not mention the tunable, this adds it and re-executes the program
-// with the same arguments (SVK square N = 256: 15.1 -> 13.3 s, 18 600 faults). Returns
-// when nothing is to be done, or when exec failed. ASTER_BLAS_SELECTED in the environment
-// (tools/valgrind) keeps the process as it is.
-void selectHugePages(char** argv);
+// virtual machines this runs on (2.8 s per GiB). A transparent huge page (2 MiB) costs one.
+// When the kernel grants them on request only (transparent_hugepage/enabled = madvise),
+// this asks for them (madvise MADV_HUGEPAGE) on the whole 2 MiB pages inside the block,
+// before it is touched; blocks smaller than 2 MiB are left alone. Nothing is lost when the
+// kernel refuses. The programs' malloc calls it on every block (src/huge_page_malloc.cpp);
+// the factor is advised here too, for builds without that malloc (sanitizers, tests).
+void adviseHugePages(void* data, std::size_t bytes);
 
 }  // namespace aster::linalg

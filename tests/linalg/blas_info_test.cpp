@@ -2,12 +2,29 @@
 
 #include <gtest/gtest.h>
 
+#include <dirent.h>
+#include <dlfcn.h>
+#include <unistd.h>
+
 #include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
 
 #include "linalg/linear_solver.hpp"
 
 namespace aster::linalg {
 namespace {
+
+int processThreads() {
+  int count = 0;
+  if (DIR* tasks = opendir("/proc/self/task")) {
+    while (const dirent* entry = readdir(tasks))
+      if (entry->d_name[0] != '.') ++count;
+    closedir(tasks);
+  }
+  return count;
+}
 
 TEST(BlasInfo, ReportsTheLibraryCholmodLoaded) {
   // Linking CHOLMOD loads libblas.so.3, whichever implementation the system selected.
@@ -37,42 +54,50 @@ TEST(BlasInfo, ScopedBlasThreadsRestoresTheCount) {
   EXPECT_EQ(blasInUse().threads, before);
 }
 
-void clearThreadVariables() {
-  for (const char* v : {"OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "ASTER_BLAS_THREADS"}) unsetenv(v);
+// Every OPENBLAS_* / ASTER_BLAS_* variable of the process, "NAME=value" each: what a child
+// process (gnuplot, gmsh) would inherit.
+std::vector<std::string> blasVariables() {
+  std::vector<std::string> found;
+  for (char** v = environ; *v; ++v)
+    if (!std::strncmp(*v, "OPENBLAS_", 9) || !std::strncmp(*v, "ASTER_BLAS", 10) || !std::strncmp(*v, "GLIBC_TUNABLES", 14))
+      found.emplace_back(*v);
+  return found;
 }
 
-// Before re-executing: one thread for the new process, the count OpenBLAS chose kept aside.
-TEST(BlasInfo, StartOnOneThreadSetsTheNewProcessVariables) {
+void clearThreadVariables() {
+  for (const char* v : {"OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"}) unsetenv(v);
+}
+
+// Start-up: OpenBLAS on one thread, its workers stopped, the count it chose kept for large
+// systems, and nothing written to the environment.
+TEST(BlasInfo, StartOnOneThreadStopsTheWorkersWithoutTouchingTheEnvironment) {
   if (blasInUse().openblasConfig.empty()) GTEST_SKIP() << "not OpenBLAS";
   clearThreadVariables();
-  const int chosen = blasInUse().threads;
+  const std::vector<std::string> before = blasVariables();
+  const int chosen = startupBlasThreads();
+  if (chosen < 2) GTEST_SKIP() << "OpenBLAS started on one thread (one core)";
+  const int threadsBefore = processThreads();
   startBlasOnOneThread();
-  ASSERT_NE(getenv("OPENBLAS_NUM_THREADS"), nullptr);
-  EXPECT_STREQ(getenv("OPENBLAS_NUM_THREADS"), "1");
-  ASSERT_NE(getenv("ASTER_BLAS_THREADS"), nullptr);
-  EXPECT_EQ(std::atoi(getenv("ASTER_BLAS_THREADS")), chosen);
-  clearThreadVariables();
+  EXPECT_EQ(blasInUse().threads, 1);
+  EXPECT_EQ(processThreads(), threadsBefore - (chosen - 1)) << "OpenBLAS's workers still run";
+  EXPECT_EQ(blasVariables(), before);
+  chooseBlasThreads(kSmallSystem - 1);
+  EXPECT_EQ(processThreads(), threadsBefore - (chosen - 1)) << "one thread asked: no worker";
+  chooseBlasThreads(kSmallSystem);
+  EXPECT_EQ(blasInUse().threads, chosen);
+  EXPECT_EQ(processThreads(), threadsBefore) << "large systems: the workers again";
+  chooseBlasThreads(kSmallSystem - 1);
+  EXPECT_EQ(blasInUse().threads, 1);
+  EXPECT_EQ(startupBlasThreads(), chosen);
 }
 
 TEST(BlasInfo, StartOnOneThreadLeavesTheUsersCount) {
-  clearThreadVariables();
-  setenv("OPENBLAS_NUM_THREADS", "3", 1);
-  startBlasOnOneThread();
-  EXPECT_STREQ(getenv("OPENBLAS_NUM_THREADS"), "3");
-  EXPECT_EQ(getenv("ASTER_BLAS_THREADS"), nullptr);
-  clearThreadVariables();
-}
-
-// The re-executed process: OpenBLAS on one thread, large systems get the count chosen before.
-TEST(BlasInfo, LargeSystemsGetTheCountChosenBeforeTheReexecution) {
   if (blasInUse().openblasConfig.empty()) GTEST_SKIP() << "not OpenBLAS";
   clearThreadVariables();
-  setenv("OPENBLAS_NUM_THREADS", "1", 1);
-  setenv("ASTER_BLAS_THREADS", "3", 1);  // not the count this process started with
-  chooseBlasThreads(kSmallSystem);
-  EXPECT_EQ(blasInUse().threads, 3);
-  chooseBlasThreads(kSmallSystem - 1);
-  EXPECT_EQ(blasInUse().threads, 1);
+  const ScopedBlasThreads two(2);
+  setenv("OPENBLAS_NUM_THREADS", "2", 1);
+  startBlasOnOneThread();
+  EXPECT_EQ(blasInUse().threads, 2);
   clearThreadVariables();
 }
 
@@ -84,6 +109,77 @@ TEST(BlasInfo, ChooseLeavesTheUsersCount) {
   chooseBlasThreads(1);
   EXPECT_EQ(blasInUse().threads, 2);
   clearThreadVariables();
+}
+
+// Only the generic Prescott kernels are replaced, and only by kernels this CPU runs.
+TEST(BlasInfo, BetterKernelsReplaceOnlyTheGenericOnes) {
+  EXPECT_EQ(betterBlasKernels("Haswell"), nullptr);
+  EXPECT_EQ(betterBlasKernels("Cooperlake"), nullptr);
+  EXPECT_EQ(betterBlasKernels(""), nullptr);
+  const char* better = betterBlasKernels("Prescott");
+  __builtin_cpu_init();
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
+    EXPECT_EQ(better, nullptr);
+  } else {
+    ASSERT_NE(better, nullptr);  // a CPU with AVX2 + FMA (and an OS saving AVX: every Linux since 2.6.30)
+    if (!__builtin_cpu_supports("avx512f")) {
+      EXPECT_STREQ(better, "Haswell");
+    }
+  }
+  EXPECT_EQ(betterBlasKernels("prescott") == nullptr, better == nullptr);
+}
+
+// C = A B for n x n column-major matrices, by the definition.
+std::vector<double> product(const std::vector<double>& a, const std::vector<double>& b, int n) {
+  std::vector<double> c(static_cast<size_t>(n) * n, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k)
+      for (int i = 0; i < n; ++i) c[i + j * n] += a[i + k * n] * b[k + j * n];
+  return c;
+}
+
+using Dgemm = void (*)(const char*, const char*, const int*, const int*, const int*, const double*, const double*,
+                       const int*, const double*, const int*, const double*, double*, const int*);
+
+// The kernels switched in the running process: OpenBLAS reports them, computes with them,
+// and the environment is left as it was.
+TEST(BlasInfo, SwitchKernelsInTheRunningProcess) {
+  const std::string original = blasInUse().openblasCore;
+  if (original.empty()) GTEST_SKIP() << "not OpenBLAS";
+  if (!dlsym(RTLD_DEFAULT, "gotoblas_dynamic_init")) GTEST_SKIP() << "OpenBLAS built for one CPU";
+  __builtin_cpu_init();
+  const char* other = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && original != "Haswell"
+                          ? "Haswell"
+                          : "Prescott";
+  const std::vector<std::string> before = blasVariables();
+  ASSERT_TRUE(switchBlasKernels(other));
+  EXPECT_EQ(blasInUse().openblasCore, other);
+  EXPECT_EQ(blasVariables(), before);
+  const int n = 150;
+  std::vector<double> a(static_cast<size_t>(n) * n), b(a.size()), c(a.size(), 0.0);
+  for (size_t i = 0; i < a.size(); ++i) {
+    a[i] = static_cast<double>((i * 7) % 13) - 6.0;
+    b[i] = static_cast<double>((i * 5) % 11) - 5.0;
+  }
+  const auto dgemm = reinterpret_cast<Dgemm>(dlsym(RTLD_DEFAULT, "dgemm_"));
+  ASSERT_NE(dgemm, nullptr);
+  const double one = 1.0, zero = 0.0;
+  dgemm("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n);
+  EXPECT_EQ(c, product(a, b, n));  // small integers: exact in any order of summation
+  EXPECT_TRUE(switchBlasKernels(original.c_str()));
+  EXPECT_EQ(blasInUse().openblasCore, original);
+}
+
+// The user's OPENBLAS_CORETYPE is kept, whatever the kernels in use.
+TEST(BlasInfo, SwitchKernelsKeepsTheUsersVariable) {
+  const std::string original = blasInUse().openblasCore;
+  if (original.empty() || !dlsym(RTLD_DEFAULT, "gotoblas_dynamic_init")) GTEST_SKIP() << "no OpenBLAS for several CPUs";
+  setenv("OPENBLAS_CORETYPE", "Prescott", 1);
+  selectBlasKernels();  // the user's choice: nothing done
+  EXPECT_EQ(blasInUse().openblasCore, original);
+  ASSERT_TRUE(switchBlasKernels(original.c_str()));
+  EXPECT_STREQ(getenv("OPENBLAS_CORETYPE"), "Prescott");
+  unsetenv("OPENBLAS_CORETYPE");
 }
 
 }  // namespace
