@@ -1,6 +1,6 @@
 // The MED library (libmedC and, through it, HDF5 and Open MPI: about 45 libraries), loaded
 // on first use rather than linked, as libgmsh (gmsh_library.hpp): loading them took
-// 15-40 ms of every run's start-up, twice with the huge-page re-execution, and only
+// 15-40 ms of every run's start-up, and only
 // studies reading or writing MED files need them. The functions are MED's C API, typed
 // from med.h so that the compiler checks every call.
 #pragma once
