@@ -28,7 +28,7 @@ struct StaticNonlinear::SolverHolder {
   std::unique_ptr<linalg::LinearSolver> solver;
 };
 
-StaticNonlinear::StaticNonlinear(const MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings)
+StaticNonlinear::StaticNonlinear(MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings)
     : system_(system), terms_(terms), settings_(std::move(settings)), solver_(std::make_shared<SolverHolder>()) {
   n_ = system_.dofCount();
   if (terms_) {
@@ -291,6 +291,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
 }
 
 void StaticNonlinear::finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt) {
+  system_.acceptState(U);
   previousIncrement_ = U - Ustart;
   previousDt_ = dt;
   ++steps_;
@@ -302,6 +303,7 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
                           const std::function<void(const ConvergedInstant&)>& converged) {
   const auto start = Clock::now();
   if (U.size() != n_) throw Error("internal error: the initial state has the wrong size");
+  system_.acceptState(U);  // the initial state, reached from the natural one
   std::vector<double> history;
   std::function<bool(double, double, int, std::string&)> interval = [&](double t0, double t1, int level,
                                                                         std::string& why) {

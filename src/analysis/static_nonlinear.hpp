@@ -59,7 +59,8 @@ struct NewtonStatistics {
 
 class StaticNonlinear {
  public:
-  StaticNonlinear(const MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings);
+  // The driver accepts each converged step's state into `system` (its laws' history).
+  StaticNonlinear(MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings);
 
   // Runs from U (the state at times[0]) through every later instant; calls
   // `converged` after each. Throws aster::Error naming the instant that failed;
@@ -79,7 +80,7 @@ class StaticNonlinear {
   void buildPattern();
   void assemble(const Eigen::VectorXd& U, double t, bool withMatrix);
 
-  const MechanicalSystem& system_;
+  MechanicalSystem& system_;
   AdditionalTerms* terms_;
   NewtonSettings settings_;
   int n_ = 0;

@@ -20,12 +20,6 @@
 namespace aster::lang {
 namespace {
 
-mechanics::Kinematics kinematicsFromName(const std::string& d) {
-  if (d == "PETIT") return mechanics::Kinematics::SmallStrain;
-  if (d == "GROT_GDEP" || d == "GREEN_LAGRANGE") return mechanics::Kinematics::TotalLagrangianSVK;
-  throw Error("DEFORMATION='" + d + "' is not available (PETIT, GROT_GDEP, GREEN_LAGRANGE)");
-}
-
 // The instants of INCREMENT between INST_INIT (or NUME_INST_INIT; by default
 // `initialTime` when ETAT_INIT gives one, else the first of the list) and INST_FIN
 // (or NUME_INST_FIN), looked up with PRECISION (relative).
@@ -65,6 +59,15 @@ std::vector<double> instantsOf(const Keywords& inc, int& subdPas, int& subdNivea
   return out;
 }
 
+// VARI_ELGA of the accepted state, when a law has internal variables (V1, V2, ...).
+void addInternalVariables(const analysis::MechanicalSystem& system, const model::Model& model, ResultInstant& inst) {
+  if (system.internalVariableCount() == 0) return;
+  GaussField vari{"VARI_ELGA", {}, model.cells(), {}, {}};
+  for (int v = 1; v <= system.internalVariableCount(); ++v) vari.components.push_back("V" + std::to_string(v));
+  system.gaussVariables(vari.offsets, vari.values);
+  inst.gauss.push_back(std::move(vari));
+}
+
 ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   auto model = static_cast<ModelConcept&>(*k.conceptPtr("MODELE")).model;
   const auto& mesh = model->mesh();
@@ -78,7 +81,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   // Behaviour: PETIT everywhere unless COMPORTEMENT says otherwise.
   std::vector<mechanics::Kinematics> byCell(mesh.cellCount(), mechanics::Kinematics::SmallStrain);
   for (const auto& occ : k.factor("COMPORTEMENT")) {
-    const auto kin = kinematicsFromName(occ.text("DEFORMATION"));
+    const auto kin = mechanics::kinematicsFromName(occ.text("DEFORMATION"));
     std::vector<int> cells = occ.has("GROUP_MA") ? selectCells(mesh, occ) : model->cells();
     for (int c : cells) byCell[c] = kin;
   }
@@ -212,6 +215,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     GaussField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, model->cells(), {}, {}};
     system.gaussStresses(U, sief.offsets, sief.values);
     first.gauss.push_back(std::move(sief));
+    addInternalVariables(system, *model, first);
     result->instants.push_back(first);
   }
 
@@ -254,6 +258,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     GaussField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, model->cells(), {}, {}};
     system.gaussStresses(*c.U, sief.offsets, sief.values);
     inst.gauss.push_back(std::move(sief));
+    addInternalVariables(system, *model, inst);
     archive.add(inst);  // an instant that is not on disk (full disk) is not in the result either
     result->instants.push_back(std::move(inst));
   };
