@@ -59,8 +59,10 @@ void PlaneElement<T, Law>::internalForce(const Coords& X, const Vector& u, const
 
 template <CellType T, class Law>
 void PlaneElement<T, Law>::internalForce(const Coords& X, const Vector& u, Vector* f, Matrix* K) const {
-  std::vector<double> variables(table_.size() * internalVariableCount());
-  internalForce(X, u, ElementHistory{}, variables.data(), f, K);
+  std::vector<double> natural(table_.size() * internalVariableCount(), 0.0), variables(natural.size());
+  ElementHistory history;
+  history.variables = natural.data();
+  internalForce(X, u, history, variables.data(), f, K);
 }
 
 template <CellType T, class Law>
@@ -71,8 +73,10 @@ void PlaneElement<T, Law>::gaussStresses(const Coords& X, const Vector& u, const
 
 template <CellType T, class Law>
 void PlaneElement<T, Law>::gaussStresses(const Coords& X, const Vector& u, double* out) const {
-  std::vector<double> variables(table_.size() * internalVariableCount());
-  gaussStresses(X, u, ElementHistory{}, out, variables.data());
+  std::vector<double> natural(table_.size() * internalVariableCount(), 0.0), variables(natural.size());
+  ElementHistory history;
+  history.variables = natural.data();
+  gaussStresses(X, u, history, out, variables.data());
 }
 
 template <CellType T, class Law>

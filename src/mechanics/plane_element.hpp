@@ -40,8 +40,8 @@ enum class KernelBuild { Baseline, Avx2Fma };
 bool kernelBuildAvailable(KernelBuild build);
 
 // The state of one element at the last accepted (converged) step, which a law
-// with history integrates from. Null pointers stand for the natural state
-// (zero displacement, stress and internal variables).
+// with history integrates from. A null displacement or stress stands for zero;
+// the variables must be given when the law has any.
 struct ElementHistory {
   const double* displacement = nullptr;  // u_n, node-major like u
   const double* stress = nullptr;        // 4 per Gauss point (SIXX, SIYY, SIZZ, SIXY)

@@ -65,7 +65,7 @@ void integrateLaw(const Law& law, Kinematics kinematics, const typename fem::Cel
     }
     in.strainIncrement = strain - previous;
     in.previousStress = history.stress ? history.stress + 4 * q : kNaturalStress;
-    in.previousVariables = history.variables && count ? history.variables + q * count : nullptr;
+    in.previousVariables = count ? history.variables + q * count : nullptr;
   }
   law.integrate(in, out, withTangent);
 }
