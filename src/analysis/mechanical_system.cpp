@@ -300,7 +300,8 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
         for (int k = 0; k < count; ++k) {
           try {
             const int first = colour[k] * kChunkCells;
-            for (int c = first; c < std::min(cellCount, first + kChunkCells); ++c) element(cells_[c], X, u, un, variables.data(), fe, Ke);
+            for (int c = first; c < std::min(cellCount, first + kChunkCells); ++c)
+              element(cells_[c], X, u, un, variables.data(), fe, Ke);
           } catch (...) {
 #pragma omp critical(aster_assembly_failure)
             if (!failure) failure = std::current_exception();

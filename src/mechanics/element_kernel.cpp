@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
+#include "mechanics/plane_element.hpp"
 
 namespace aster::mechanics {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "mechanics/behaviour_law.hpp"
 #include "mechanics/modelling.hpp"
-#include "mechanics/plane_element.hpp"
+#include "mechanics/element_history.hpp"
 #include "mesh/cell_type.hpp"
 
 namespace aster::mechanics {

@@ -26,6 +26,7 @@
 #include "fem/quadrature.hpp"
 #include "fem/shape_table.hpp"
 #include "mechanics/behaviour_law.hpp"
+#include "mechanics/element_history.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
 #include "mechanics/modelling.hpp"
 
@@ -38,15 +39,6 @@ using fem::CellType;
 // the CPU has it. They agree to rounding.
 enum class KernelBuild { Baseline, Avx2Fma };
 bool kernelBuildAvailable(KernelBuild build);
-
-// The state of one element at the last accepted (converged) step, which a law
-// with history integrates from. A null displacement or stress stands for zero;
-// the variables must be given when the law has any.
-struct ElementHistory {
-  const double* displacement = nullptr;  // u_n, node-major like u
-  const double* stress = nullptr;        // 4 per Gauss point (SIXX, SIYY, SIZZ, SIXY)
-  const double* variables = nullptr;     // the law's internalVariableCount() per Gauss point
-};
 
 // Law: IsotropicElasticity (inlined, built for AVX2 too) or BehaviourLaw (any
 // law, through its virtual integrate()).

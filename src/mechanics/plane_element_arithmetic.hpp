@@ -109,7 +109,8 @@ void addStiffness(const VoigtTangent& D, double w, const Eigen::Matrix2d& F,
   for (int b = 0; b < nodes; ++b)
     for (int a = 0; a <= b; ++a) {
       const double geo = GS(a, 0) * G(b, 0) + GS(a, 1) * G(b, 1);
-      K.template block<2, 2>(2 * a, 2 * b) += B.template middleCols<2>(2 * a).transpose() * DB.template middleCols<2>(2 * b);
+      K.template block<2, 2>(2 * a, 2 * b) +=
+          B.template middleCols<2>(2 * a).transpose() * DB.template middleCols<2>(2 * b);
       K(2 * a, 2 * b) += geo;
       K(2 * a + 1, 2 * b + 1) += geo;
     }
