@@ -29,13 +29,14 @@ namespace {
 // Plane strain hyperelasticity with the energy
 //   W(e) = lambda/2 tr(e)^2 + beta/3 tr(e)^3 + mu e:e   (e_zz = 0),
 // so s = (lambda tr + beta tr^2) I + 2 mu e, s_zz = lambda tr + beta tr^2 and
-// dS/dE = (lambda + 2 beta tr) I x I + 2 mu I_sym (symmetric). Two internal
-// variables that need the history: V1 the largest tr(e) of the accepted states,
-// V2 the total variation of tr(e), sum |increment of tr(e)|.
+// dS/dE = (lambda + 2 beta tr) I x I + 2 mu I_sym (symmetric). Three internal
+// variables that read the history: V1 the largest tr(e) of the accepted states,
+// V2 the total variation of tr(e), sum |increment of tr(e)|, V3 the SIXX of the
+// state the increment starts from (previous stress).
 class CubicVolumetricLaw final : public BehaviourLaw {
  public:
   CubicVolumetricLaw(double lambda, double mu, double beta) : lambda_(lambda), mu_(mu), beta_(beta) {}
-  int internalVariableCount() const override { return 2; }
+  int internalVariableCount() const override { return 3; }
   void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const override {
     const double tr = in.strain.trace();
     const double p = lambda_ * tr + beta_ * tr * tr;
@@ -43,6 +44,7 @@ class CubicVolumetricLaw final : public BehaviourLaw {
     out.stressZZ = p;
     out.variables[0] = std::max(in.previousVariables[0], tr);
     out.variables[1] = in.previousVariables[1] + std::fabs(in.strainIncrement.trace());
+    out.variables[2] = in.previousStress[0];
     if (withTangent) {
       const double k = lambda_ + 2 * beta_ * tr;
       out.tangent << k + 2 * mu_, k, 0,  //
@@ -61,8 +63,8 @@ Eigen::Vector3d voigtStress(const Eigen::Matrix2d& s) { return {s(0, 0), s(1, 1)
 
 TEST(BehaviourLaw, CubicLawTangentMatchesDifferences) {
   const CubicVolumetricLaw law(kLambda, kMu, kBeta);
-  const double previous[2] = {0, 0}, stress0[4] = {0, 0, 0, 0};
-  double variables[2];
+  const double previous[3] = {0, 0, 0}, stress0[4] = {0, 0, 0, 0};
+  double variables[3];
   LawInput in;
   in.strain << 0.03, -0.02, -0.02, 0.05;
   in.strainIncrement = in.strain;
@@ -166,7 +168,7 @@ TEST(BehaviourLaw, KernelChoosesTheInlinedBuildForElasticityOnly) {
   EXPECT_FALSE(a->usesHistory());
   EXPECT_EQ(a->internalVariables(), 0);
   EXPECT_TRUE(b->usesHistory());
-  EXPECT_EQ(b->internalVariables(), 2);
+  EXPECT_EQ(b->internalVariables(), 3);
   EXPECT_EQ(b->gaussPoints(), 9);
 }
 
@@ -175,7 +177,8 @@ TEST(BehaviourLaw, KernelChoosesTheInlinedBuildForElasticityOnly) {
 //   lambda tr + beta tr^2 + 2 mu (tr - d) = 0, tr = d + e,
 // a quadratic in tr solved by hand; then s11 = p + 2 mu d, s_zz = p, p = lambda tr + beta tr^2,
 // and the reaction on DROITE is s11 * 1. Loading d = 0.05 at INST 1, unloading to
-// 0.025 at INST 2: V1 = tr(1), V2 = tr(1) + (tr(1) - tr(2)).
+// 0.025 at INST 2: V1 = tr(1), V2 = tr(1) + (tr(1) - tr(2)), V3 = s11 at the
+// instant before (0 at INST 1).
 TEST(BehaviourLaw, CubicLawThroughTheNewtonDriverMatchesTheHomogeneousSolution) {
   auto mesh = std::make_shared<mesh::Mesh>(test_support::squareMesh(3, mesh::CellType::QUAD4));
   auto model = std::make_shared<model::Model>(mesh);
@@ -196,7 +199,7 @@ TEST(BehaviourLaw, CubicLawThroughTheNewtonDriverMatchesTheHomogeneousSolution) 
   problem.kinematics.assign(model->cells().size(), Kinematics::SmallStrain);
   problem.relations.assign(model->cells().size(), std::make_shared<CubicVolumetricLaw>(kLambda, kMu, kBeta));
   analysis::MechanicalSystem system(problem);
-  EXPECT_EQ(system.internalVariableCount(), 2);
+  EXPECT_EQ(system.internalVariableCount(), 3);
 
   analysis::NewtonSettings settings;
   settings.print = false;
@@ -233,11 +236,13 @@ TEST(BehaviourLaw, CubicLawThroughTheNewtonDriverMatchesTheHomogeneousSolution) 
     for (int n : mesh->nodesOfCells(mesh->cellGroup("DROITE"))) reaction += (*c.internalForces)(system.dof(n, 0));
     EXPECT_NEAR(reaction, p + 2 * kMu * stretch, 1e-12);
     system.gaussVariables(offsets, s);
-    ASSERT_EQ(s.size(), 2 * 4 * model->cells().size());  // 2 variables, 4 points per QUAD4
+    ASSERT_EQ(s.size(), 3 * 4 * model->cells().size());  // 3 variables, 4 points per QUAD4
     const double v1 = tr1, v2 = c.time == 1.0 ? tr1 : tr1 + (tr1 - tr2);
-    for (std::size_t q = 0; q < s.size() / 2; ++q) {
-      EXPECT_NEAR(s[2 * q], v1, 1e-12);
-      EXPECT_NEAR(s[2 * q + 1], v2, 1e-12);
+    const double v3 = c.time == 1.0 ? 0.0 : kLambda * tr1 + kBeta * tr1 * tr1 + 2 * kMu * d;
+    for (std::size_t q = 0; q < s.size() / 3; ++q) {
+      EXPECT_NEAR(s[3 * q], v1, 1e-12);
+      EXPECT_NEAR(s[3 * q + 1], v2, 1e-12);
+      EXPECT_NEAR(s[3 * q + 2], v3, 1e-12);
     }
     traces.push_back(tr);
   });
