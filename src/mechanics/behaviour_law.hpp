@@ -8,10 +8,11 @@
 // The law sees only the in-plane strain and the plane hypothesis it was built
 // for (a C_PLAN law makes s_zz = 0 itself).
 //
-// A law is one class derived from BehaviourLaw. The element kernels are
-// templates on the law: for a final class with an inline integrate() (as
-// IsotropicElasticity) the law is compiled into the kernel, the AVX2 build
-// included; any other law runs through the virtual call below.
+// A law is one class derived from BehaviourLaw; the element kernels run it
+// through the virtual integrate() below. The element templates take the law as
+// a parameter, so a final class with an inline integrate() can also be compiled
+// into them: IsotropicElasticity (ELAS) is, AVX2 build included
+// (element_kernel.cpp picks it, plane_element.cpp instantiates it).
 #pragma once
 #include <Eigen/Core>
 
