@@ -12,7 +12,7 @@ set(ASTER_LAYERS
   "linalg:core"
   "mesh:core"
   "fem:core mesh linalg"
-  "model:core mesh expr"
+  "model:core mesh expr mechanics"
   "mechanics:core expr mesh fem"
   "contact:core mesh fem"
   "analysis:core expr linalg mesh fem model mechanics contact"

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "expr/expression.hpp"
 #include "fem/mesh_cell_type.hpp"
+#include "mechanics/isotropic_elasticity.hpp"
 #include "mechanics/loads.hpp"
 #include "mesh/cell_type.hpp"
 
@@ -17,12 +18,8 @@ namespace aster::analysis {
 namespace {
 
 
-mechanics::PlaneHypothesis hypothesisOf(model::Modelisation m) {
-  return m == model::Modelisation::PlaneStrain ? mechanics::PlaneHypothesis::PlaneStrain
-                                               : mechanics::PlaneHypothesis::PlaneStress;
-}
-
 constexpr int kMaxNodes = 9;
+constexpr int kMaxGaussPoints = 9;  // QUAD9's full rule
 // From this many cells on, the element kernels run on every thread, colour by colour.
 constexpr std::size_t kParallelCells = 4096;
 
@@ -65,28 +62,56 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
   if (problem_.kinematics.size() != m.cells().size())
     throw Error("internal error: one kinematics per cell of the model is expected");
 
-  // One kernel per (type, material, modelisation, kinematics).
-  std::map<std::tuple<int, const model::ElasticMaterial*, int, int>, const mechanics::ElementKernel*> cache;
+  if (!problem_.relations.empty() && problem_.relations.size() != m.cells().size())
+    throw Error("internal error: one behaviour law per cell of the model is expected");
+
+  // ELAS: one law per (material, modelisation); one kernel per (type, law, kinematics).
+  std::map<std::pair<const model::ElasticMaterial*, int>, std::shared_ptr<const mechanics::BehaviourLaw>> elastic;
+  std::map<std::tuple<int, const mechanics::BehaviourLaw*, int>, const mechanics::ElementKernel*> cache;
+  int statePoints = 0, stateVariables = 0;
   for (std::size_t k = 0; k < m.cells().size(); ++k) {
     const int c = m.cells()[k];
-    const model::ElasticMaterial* mat = problem_.materials ? problem_.materials->at(c) : nullptr;
-    if (!mat)
-      throw Error("cell " + mesh.cellName(c) + " of the model has no material (AFFE_MATERIAU covers it?)");
-    const auto key = std::make_tuple(static_cast<int>(mesh.cellType(c)), mat,
-                                     static_cast<int>(m.modelisation(k)), static_cast<int>(problem_.kinematics[k]));
+    std::shared_ptr<const mechanics::BehaviourLaw> law;
+    if (!problem_.relations.empty()) {
+      law = problem_.relations[k];
+      if (!law) throw Error("internal error: cell " + mesh.cellName(c) + " of the model has no behaviour law");
+    } else {
+      const model::ElasticMaterial* mat = problem_.materials ? problem_.materials->at(c) : nullptr;
+      if (!mat)
+        throw Error("cell " + mesh.cellName(c) + " of the model has no material (AFFE_MATERIAU covers it?)");
+      auto& slot = elastic[{mat, static_cast<int>(m.modelisation(k))}];
+      if (!slot) slot = std::make_shared<mechanics::IsotropicElasticity>(mat->E, mat->NU, m.modelisation(k));
+      law = slot;
+    }
+    const auto key = std::make_tuple(static_cast<int>(mesh.cellType(c)), law.get(),
+                                     static_cast<int>(problem_.kinematics[k]));
     auto it = cache.find(key);
     if (it == cache.end()) {
-      kernels_.push_back(mechanics::makePlaneKernel(mesh.cellType(c),
-                                         mechanics::PlaneElasticity(mat->E, mat->NU, hypothesisOf(m.modelisation(k))),
-                                         problem_.kinematics[k]));
+      kernels_.push_back(mechanics::makePlaneKernel(mesh.cellType(c), law, problem_.kinematics[k]));
       it = cache.emplace(key, kernels_.back().get()).first;
     }
+    const mechanics::ElementKernel* kernel = it->second;
+    if (kernel->gaussPoints() > kMaxGaussPoints) throw Error("internal error: more Gauss points than kMaxGaussPoints");
     std::vector<int> d;
     for (int n : mesh.cellNodes(c)) {
       d.push_back(dofs_.dof(n, 0));
       d.push_back(dofs_.dof(n, 1));
     }
-    cells_.push_back({c, it->second, elements_.add(d)});
+    Cell cell{c, kernel, elements_.add(d), -1, 0};
+    if (kernel->usesHistory()) {
+      cell.state = statePoints;
+      cell.variables = stateVariables;
+      statePoints += kernel->gaussPoints();
+      stateVariables += kernel->gaussPoints() * kernel->internalVariables();
+      hasHistory_ = true;
+    }
+    maxVariables_ = std::max(maxVariables_, kernel->internalVariables());
+    cells_.push_back(cell);
+  }
+  if (hasHistory_) {
+    acceptedU_ = Eigen::VectorXd::Zero(dofCount());
+    acceptedStress_.assign(4 * statePoints, 0.0);
+    acceptedVariables_.assign(stateVariables, 0.0);
   }
   if (cells_.size() >= kParallelCells) {
     fem::ElementDofs chunkDofs;
@@ -234,21 +259,23 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
   // Small models (the studies, the tests) keep the cells' order: same sums as ever.
   double* const f = fint.data();
   double* const values = K ? K->valuePtr() : nullptr;
-  auto element = [&](const Cell& cell, double* X, double* u, double* fe, double* Ke) {
+  // The laws' new internal variables are not kept: acceptState() recomputes them.
+  auto element = [&](const Cell& cell, double* X, double* u, double* un, double* variables, double* fe, double* Ke) {
     gatherCoords(cell.meshCell, X);
     const int n = cell.kernel->nodes();
     const int* d = elements_.dofs(cell.element);
     for (int i = 0; i < 2 * n; ++i) u[i] = U(d[i]);
-    cell.kernel->internalForce(X, u, fe, values ? Ke : nullptr);
+    cell.kernel->internalForce(X, u, historyOf(cell, un), variables, fe, values ? Ke : nullptr);
     for (int i = 0; i < 2 * n; ++i) f[d[i]] += fe[i];
     if (values) pattern->addMatrix(cell.element, Ke, values);
   };
   const std::int64_t nonZeros = K ? K->nonZeros() : 0;
   if (chunkColours_.empty()) {
     std::fill(values, values + nonZeros, 0.0);
-    double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
+    double X[2 * kMaxNodes], u[2 * kMaxNodes], un[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
+    std::vector<double> variables(kMaxGaussPoints * maxVariables_);
     try {
-      for (const Cell& cell : cells_) element(cell, X, u, fe, Ke);
+      for (const Cell& cell : cells_) element(cell, X, u, un, variables.data(), fe, Ke);
     } catch (const Error& e) {
       throw InvalidStateError(e.what());
     }
@@ -264,7 +291,8 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
 #pragma omp for schedule(static)
       for (std::int64_t first = 0; first < nonZeros; first += kSlice)
         std::fill(values + first, values + std::min(nonZeros, first + kSlice), 0.0);
-      double X[2 * kMaxNodes], u[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
+      double X[2 * kMaxNodes], u[2 * kMaxNodes], un[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
+      std::vector<double> variables(kMaxGaussPoints * maxVariables_);
       const int cellCount = static_cast<int>(cells_.size());
       for (const std::vector<int>& colour : chunkColours_) {
         const int count = static_cast<int>(colour.size());
@@ -272,7 +300,8 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
         for (int k = 0; k < count; ++k) {
           try {
             const int first = colour[k] * kChunkCells;
-            for (int c = first; c < std::min(cellCount, first + kChunkCells); ++c) element(cells_[c], X, u, fe, Ke);
+            for (int c = first; c < std::min(cellCount, first + kChunkCells); ++c)
+              element(cells_[c], X, u, un, variables.data(), fe, Ke);
           } catch (...) {
 #pragma omp critical(aster_assembly_failure)
             if (!failure) failure = std::current_exception();
@@ -340,19 +369,59 @@ std::vector<std::pair<int, double>> MechanicalSystem::imposed(double t) const {
   return out;
 }
 
+mechanics::ElementHistory MechanicalSystem::historyOf(const Cell& cell, double* un) const {
+  if (cell.state < 0) return {};
+  const int* d = elements_.dofs(cell.element);
+  for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) un[i] = acceptedU_(d[i]);
+  return {un, acceptedStress_.data() + 4 * cell.state, acceptedVariables_.data() + cell.variables};
+}
+
+void MechanicalSystem::acceptState(const Eigen::VectorXd& U) {
+  if (!hasHistory_) return;
+  std::vector<double> stress(acceptedStress_.size()), variables(acceptedVariables_.size());
+  double X[2 * kMaxNodes], u[2 * kMaxNodes], un[2 * kMaxNodes];
+  try {
+    for (const Cell& cell : cells_) {
+      if (cell.state < 0) continue;
+      gatherCoords(cell.meshCell, X);
+      const int* d = elements_.dofs(cell.element);
+      for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) u[i] = U(d[i]);
+      cell.kernel->stresses(X, u, historyOf(cell, un), stress.data() + 4 * cell.state,
+                            variables.data() + cell.variables);
+    }
+  } catch (const Error& e) {
+    throw InvalidStateError(e.what());
+  }
+  acceptedU_ = U.head(dofCount());
+  acceptedStress_.swap(stress);
+  acceptedVariables_.swap(variables);
+}
+
 void MechanicalSystem::gaussStresses(const Eigen::VectorXd& U, std::vector<int>& offsets,
                                      std::vector<double>& values) const {
   offsets.assign(1, 0);
   values.clear();
-  double X[2 * kMaxNodes], u[2 * kMaxNodes];
-  std::vector<double> s;
+  double X[2 * kMaxNodes], u[2 * kMaxNodes], un[2 * kMaxNodes];
+  std::vector<double> s, variables(kMaxGaussPoints * maxVariables_);
   for (const Cell& cell : cells_) {
     gatherCoords(cell.meshCell, X);
     const int* d = elements_.dofs(cell.element);
     for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) u[i] = U(d[i]);
     s.resize(4 * cell.kernel->gaussPoints());
-    cell.kernel->stresses(X, u, s.data());
+    cell.kernel->stresses(X, u, historyOf(cell, un), s.data(), variables.data());
     values.insert(values.end(), s.begin(), s.end());
+    offsets.push_back(static_cast<int>(values.size()));
+  }
+}
+
+void MechanicalSystem::gaussVariables(std::vector<int>& offsets, std::vector<double>& values) const {
+  offsets.assign(1, 0);
+  values.clear();
+  for (const Cell& cell : cells_) {
+    const int points = cell.kernel->gaussPoints(), count = cell.kernel->internalVariables();
+    for (int q = 0; q < points; ++q)
+      for (int v = 0; v < maxVariables_; ++v)
+        values.push_back(cell.state >= 0 && v < count ? acceptedVariables_[cell.variables + q * count + v] : 0.0);
     offsets.push_back(static_cast<int>(values.size()));
   }
 }

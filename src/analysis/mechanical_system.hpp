@@ -15,11 +15,12 @@
 #include "expr/function.hpp"
 #include "fem/assembly_pattern.hpp"
 #include "fem/dof_map.hpp"
-#include "mechanics/plane_elasticity.hpp"
+#include "mechanics/behaviour_law.hpp"
+#include "mechanics/element_kernel.hpp"
+#include "mechanics/modelling.hpp"
 #include "model/loads.hpp"
 #include "model/material.hpp"
 #include "model/model.hpp"
-#include "mechanics/element_kernel.hpp"
 
 namespace aster::analysis {
 
@@ -45,8 +46,11 @@ struct MechanicalProblem {
   std::shared_ptr<const model::Model> model;
   std::shared_ptr<const model::MaterialField> materials;
   std::vector<AppliedLoad> loads;
-  // Per cell of model->cells(): its kinematics (COMPORTEMENT).
+  // Per cell of model->cells(): its kinematics (COMPORTEMENT's DEFORMATION).
   std::vector<mechanics::Kinematics> kinematics;
+  // Per cell of model->cells(): its behaviour law (COMPORTEMENT's RELATION), or
+  // empty: ELAS of the cell's material (mechanics::IsotropicElasticity) everywhere.
+  std::vector<std::shared_ptr<const mechanics::BehaviourLaw>> relations;
 };
 
 class MechanicalSystem {
@@ -79,8 +83,18 @@ class MechanicalSystem {
   // Imposed displacements at t: (dof, value), each DOF once (the last load wins).
   std::vector<std::pair<int, double>> imposed(double t) const;
 
+  // The laws' state at the last accepted step (the natural state, U = 0, at first):
+  // evaluate() and gaussStresses() integrate from it. acceptState(U) integrates
+  // the laws at U (mechanical DOFs first) and keeps the result: the driver calls it
+  // once per converged step. Free for laws without history (ELAS).
+  void acceptState(const Eigen::VectorXd& U);
+
   // SIEF_ELGA at U: per cell of the model, 4 components per Gauss point.
   void gaussStresses(const Eigen::VectorXd& U, std::vector<int>& offsets, std::vector<double>& values) const;
+  // VARI_ELGA of the accepted state: internalVariableCount() values (V1, V2, ...) per
+  // Gauss point of every cell of the model, zero past a cell's own law's count.
+  int internalVariableCount() const { return maxVariables_; }
+  void gaussVariables(std::vector<int>& offsets, std::vector<double>& values) const;
   // Gauss point positions and weights*detJ in the reference configuration.
   void gaussGeometry(std::vector<int>& offsets, std::vector<double>& xy, std::vector<double>& weights) const;
 
@@ -89,6 +103,8 @@ class MechanicalSystem {
     int meshCell;
     const mechanics::ElementKernel* kernel;
     int element;  // index in elements_
+    int state;      // first of its Gauss points in the accepted state, -1 when its law has no history
+    int variables;  // first of its internal variables in the accepted state
   };
   struct Edge {  // an edge of a follower pressure
     int meshCell;
@@ -97,6 +113,8 @@ class MechanicalSystem {
     const AppliedLoad* load;
   };
   void gatherCoords(int meshCell, double* X) const;
+  // The accepted state of a cell (u_n gathered into `un`); empty without history.
+  mechanics::ElementHistory historyOf(const Cell& cell, double* un) const;
   void addDeadLoads(double t, Eigen::VectorXd& fext) const;
   Eigen::VectorXd deadLoadVector(const AppliedLoad& applied, double t) const;
 
@@ -116,6 +134,12 @@ class MechanicalSystem {
   std::vector<Edge> pressureEdges_;
   // Dead loads independent of time, computed once: F(t) = factor(t) * F0.
   std::vector<Eigen::VectorXd> constantDeadLoads_;  // per problem_.loads entry, empty if time dependent
+  // The accepted state of the cells whose law has history: U, 4 stresses per Gauss
+  // point, the law's internal variables per Gauss point.
+  int maxVariables_ = 0;
+  bool hasHistory_ = false;
+  Eigen::VectorXd acceptedU_;
+  std::vector<double> acceptedStress_, acceptedVariables_;
 };
 
 }  // namespace aster::analysis

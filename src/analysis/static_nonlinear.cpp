@@ -29,7 +29,7 @@ struct StaticNonlinear::SolverHolder {
   std::unique_ptr<linalg::LinearSolver> solver;
 };
 
-StaticNonlinear::StaticNonlinear(const MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings)
+StaticNonlinear::StaticNonlinear(MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings)
     : system_(system), terms_(terms), settings_(std::move(settings)), solver_(std::make_shared<SolverHolder>()) {
   n_ = system_.dofCount();
   if (terms_) {
@@ -370,6 +370,7 @@ void StaticNonlinear::report(const Iteration& it, const char* matrix) const {
 }
 
 void StaticNonlinear::finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt) {
+  system_.acceptState(U);
   previousIncrement_ = U - Ustart;
   previousDt_ = dt;
   ++steps_;
@@ -381,6 +382,7 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
                           const std::function<void(const ConvergedInstant&)>& converged) {
   const auto start = Clock::now();
   if (U.size() != n_) throw Error("internal error: the initial state has the wrong size");
+  system_.acceptState(U);  // the initial state, reached from the natural one
   std::vector<double> history;
   std::function<bool(double, double, int, std::string&)> interval = [&](double t0, double t1, int level,
                                                                         std::string& why) {

@@ -70,7 +70,8 @@ struct NewtonStatistics {
 
 class StaticNonlinear {
  public:
-  StaticNonlinear(const MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings);
+  // The driver accepts each converged step's state into `system` (its laws' history).
+  StaticNonlinear(MechanicalSystem& system, AdditionalTerms* terms, NewtonSettings settings);
 
   // Observers are told of every step and iteration in the order they were added; they
   // must outlive the driver's run().
@@ -106,7 +107,7 @@ class StaticNonlinear {
   void buildPattern();
   void assemble(const Eigen::VectorXd& U, double t, bool withMatrix);
 
-  const MechanicalSystem& system_;
+  MechanicalSystem& system_;
   AdditionalTerms* terms_;
   NewtonSettings settings_;
   int n_ = 0;

@@ -58,7 +58,7 @@ ConceptPtr affeModele(const Keywords& k, Session&, ConceptPtr) {
   std::ostringstream info;
   for (const auto& occ : k.factor("AFFE")) {
     const auto cells = selectCells(*mesh, occ);
-    const auto mod = model::modelisationFromName(occ.text("MODELISATION"));
+    const auto mod = mechanics::planeHypothesisFromName(occ.text("MODELISATION"));
     const int n = m->assign(cells, mod);
     if (n == 0)
       throw Error(occ.path + ": none of the " + std::to_string(cells.size()) +

@@ -24,12 +24,6 @@
 namespace aster::lang {
 namespace {
 
-mechanics::Kinematics kinematicsFromName(const std::string& d) {
-  if (d == "PETIT") return mechanics::Kinematics::SmallStrain;
-  if (d == "GROT_GDEP" || d == "GREEN_LAGRANGE") return mechanics::Kinematics::TotalLagrangianSVK;
-  throw Error("DEFORMATION='" + d + "' is not available (PETIT, GROT_GDEP, GREEN_LAGRANGE)");
-}
-
 // The instants of INCREMENT between INST_INIT (or NUME_INST_INIT; by default
 // `initialTime` when ETAT_INIT gives one, else the first of the list) and INST_FIN
 // (or NUME_INST_FIN), looked up with PRECISION (relative).
@@ -85,7 +79,7 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
   // Behaviour: PETIT everywhere unless COMPORTEMENT says otherwise.
   std::vector<mechanics::Kinematics> byCell(mesh.cellCount(), mechanics::Kinematics::SmallStrain);
   for (const auto& occ : k.factor("COMPORTEMENT")) {
-    const auto kin = kinematicsFromName(occ.text("DEFORMATION"));
+    const auto kin = mechanics::kinematicsFromName(occ.text("DEFORMATION"));
     std::vector<int> cells = occ.has("GROUP_MA") ? selectCells(mesh, occ) : model->cells();
     for (int c : cells) byCell[c] = kin;
   }
@@ -207,7 +201,8 @@ mesh::NodalField nodalField(const std::string& name, const analysis::MechanicalS
 }
 
 // The fields of a state stored in the result: DEPL (with the terms' own unknowns),
-// REAC_NODA, FORC_NODA, the terms' fields, SIEF_ELGA. The initial state has no reactions
+// REAC_NODA, FORC_NODA, the terms' fields, SIEF_ELGA, and VARI_ELGA (V1, V2, ...) of
+// the accepted state when a law has internal variables. The initial state has no reactions
 // (reactions null) and no terms' fields: it was not computed.
 ResultInstant resultInstant(const analysis::MechanicalSystem& system, const analysis::AdditionalTerms* terms,
                             double time, const Eigen::VectorXd& U, const Eigen::VectorXd& internalForces,
@@ -223,6 +218,12 @@ ResultInstant resultInstant(const analysis::MechanicalSystem& system, const anal
   GaussField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, system.model().cells(), {}, {}};
   system.gaussStresses(U, sief.offsets, sief.values);
   inst.gauss.push_back(std::move(sief));
+  if (system.internalVariableCount() > 0) {
+    GaussField vari{"VARI_ELGA", {}, system.model().cells(), {}, {}};
+    for (int v = 1; v <= system.internalVariableCount(); ++v) vari.components.push_back("V" + std::to_string(v));
+    system.gaussVariables(vari.offsets, vari.values);
+    inst.gauss.push_back(std::move(vari));
+  }
   return inst;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "expr/dual.hpp"
+#include "mechanics/isotropic_elasticity.hpp"
 
 namespace aster::mechanics {
 
@@ -17,19 +18,6 @@ using expr::Function;
 using expr::FunctionPtr;
 using expr::joinNames;
 using expr::numberText;
-
-PlaneHypothesis planeHypothesisFromName(const std::string& word) {
-  if (word == "D_PLAN") return PlaneHypothesis::PlaneStrain;
-  if (word == "C_PLAN") return PlaneHypothesis::PlaneStress;
-  throw Error("manufactured solution: modelling must be 'D_PLAN' or 'C_PLAN', got '" + word + "'");
-}
-
-Kinematics kinematicsFromName(const std::string& word) {
-  if (word == "PETIT") return Kinematics::SmallStrain;
-  if (word == "GROT_GDEP" || word == "GREEN_LAGRANGE") return Kinematics::TotalLagrangianSVK;
-  throw Error("manufactured solution: DEFORMATION must be 'PETIT', 'GROT_GDEP' or "
-              "'GREEN_LAGRANGE', got '" + word + "'");
-}
 
 namespace {
 
@@ -96,9 +84,9 @@ ManufacturedElasticity::ManufacturedElasticity(ExpressionPtr ux, ExpressionPtr u
   if (!(young > 0)) throw Error("manufactured solution: E = " + numberText(young) + " must be > 0");
   if (!(poisson > -1.0 && poisson < 0.5))
     throw Error("manufactured solution: NU = " + numberText(poisson) + " must be in ]-1, 0.5[");
-  lambda_ = young * poisson / ((1 + poisson) * (1 - 2 * poisson));
-  mu_ = young / (2 * (1 + poisson));
-  if (hypothesis == PlaneHypothesis::PlaneStress) lambda_ = 2 * lambda_ * mu_ / (lambda_ + 2 * mu_);
+  const IsotropicElasticity law(young, poisson, hypothesis);
+  lambda_ = law.planeLambda();
+  mu_ = law.mu();
 }
 
 template <class T>

@@ -18,12 +18,9 @@
 #include <string>
 
 #include "expr/expression.hpp"
-#include "mechanics/plane_elasticity.hpp"
+#include "mechanics/modelling.hpp"
 
 namespace aster::mechanics {
-
-PlaneHypothesis planeHypothesisFromName(const std::string& word);  // D_PLAN, C_PLAN
-Kinematics kinematicsFromName(const std::string& word);  // PETIT, GROT_GDEP, GREEN_LAGRANGE
 
 struct ContactTraction {
   Eigen::Vector2d normal;      // n, unit normal of the deformed boundary

@@ -1,5 +1,8 @@
 #include "mechanics/plane_element.hpp"
 
+#include <type_traits>
+#include <vector>
+
 #include "core/error.hpp"
 #include "mechanics/plane_element_arithmetic.hpp"
 #include "mechanics/plane_element_avx2.hpp"
@@ -16,49 +19,68 @@ bool kernelBuildAvailable(KernelBuild build) {
 #endif
 }
 
-template <CellType T>
-PlaneElement<T>::PlaneElement(const PlaneElasticity& material, Kinematics kinematics)
-    : PlaneElement(material, kinematics, fem::fullSurfaceRule(T)) {}
+namespace {
+// The AVX2 build exists for the inlined law only.
+template <class Law>
+constexpr bool kHasAvx2Build = std::is_same_v<Law, IsotropicElasticity>;
+}  // namespace
 
-template <CellType T>
-PlaneElement<T>::PlaneElement(const PlaneElasticity& material, Kinematics kinematics,
-                              const fem::QuadratureRule<2>& rule)
-    : material_(material),
+template <CellType T, class Law>
+PlaneElement<T, Law>::PlaneElement(std::shared_ptr<const Law> law, Kinematics kinematics)
+    : PlaneElement(std::move(law), kinematics, fem::fullSurfaceRule(T)) {}
+
+template <CellType T, class Law>
+PlaneElement<T, Law>::PlaneElement(std::shared_ptr<const Law> law, Kinematics kinematics,
+                                   const fem::QuadratureRule<2>& rule)
+    : law_(std::move(law)),
       kinematics_(kinematics),
       table_(rule),
-      build_(kernelBuildAvailable(KernelBuild::Avx2Fma) ? KernelBuild::Avx2Fma : KernelBuild::Baseline) {}
+      build_(kHasAvx2Build<Law> && kernelBuildAvailable(KernelBuild::Avx2Fma) ? KernelBuild::Avx2Fma
+                                                                               : KernelBuild::Baseline) {
+  if (!law_) throw Error("internal error: a plane element without a behaviour law");
+}
 
-template <CellType T>
-void PlaneElement<T>::setBuild(KernelBuild build) {
-  if (!kernelBuildAvailable(build)) throw Error("the AVX2 + FMA build of the element kernels is not available here");
+template <CellType T, class Law>
+void PlaneElement<T, Law>::setBuild(KernelBuild build) {
+  if (!kernelBuildAvailable(build) || (build == KernelBuild::Avx2Fma && !kHasAvx2Build<Law>))
+    throw Error("the AVX2 + FMA build of the element kernels is not available here");
   build_ = build;
 }
 
-template <CellType T>
-void PlaneElement<T>::internalForce(const Coords& X, const Vector& u, Vector* f, Matrix* K) const {
+template <CellType T, class Law>
+void PlaneElement<T, Law>::internalForce(const Coords& X, const Vector& u, const ElementHistory& history,
+                                         double* variables, Vector* f, Matrix* K) const {
 #ifdef ASTER_AVX2_KERNELS
-  if (build_ == KernelBuild::Avx2Fma) return avx2::internalForce<T>(table_, material_, kinematics_, X, u, f, K);
+  if constexpr (kHasAvx2Build<Law>)
+    if (build_ == KernelBuild::Avx2Fma) return avx2::internalForce<T>(table_, *law_, kinematics_, X, u, f, K);
 #endif
-  arithmetic::internalForce<T>(table_, material_, kinematics_, X, u, f, K);
+  arithmetic::internalForce<T>(table_, *law_, kinematics_, X, u, history, variables, f, K);
 }
 
-template <CellType T>
-void PlaneElement<T>::gaussStresses(const Coords& X, const Vector& u, double* out) const {
-  typename C::Gradients G;
-  for (int q = 0; q < table_.size(); ++q) {
-    arithmetic::pointGradients<T>(table_, X, q, G);
-    Eigen::Matrix2d F, E;
-    arithmetic::strainAt<T>(kinematics_, G, u, F, E);
-    const Eigen::Matrix2d S = material_.stress(E);
-    out[4 * q + 0] = S(0, 0);
-    out[4 * q + 1] = S(1, 1);
-    out[4 * q + 2] = material_.outOfPlaneStress(E);
-    out[4 * q + 3] = S(0, 1);
-  }
+template <CellType T, class Law>
+void PlaneElement<T, Law>::internalForce(const Coords& X, const Vector& u, Vector* f, Matrix* K) const {
+  std::vector<double> natural(table_.size() * internalVariableCount(), 0.0), variables(natural.size());
+  ElementHistory history;
+  history.variables = natural.data();
+  internalForce(X, u, history, variables.data(), f, K);
 }
 
-template <CellType T>
-void PlaneElement<T>::gaussGeometry(const Coords& X, double* xy, double* weightDet) const {
+template <CellType T, class Law>
+void PlaneElement<T, Law>::gaussStresses(const Coords& X, const Vector& u, const ElementHistory& history, double* out,
+                                         double* variables) const {
+  arithmetic::gaussStresses<T>(table_, *law_, kinematics_, X, u, history, out, variables);
+}
+
+template <CellType T, class Law>
+void PlaneElement<T, Law>::gaussStresses(const Coords& X, const Vector& u, double* out) const {
+  std::vector<double> natural(table_.size() * internalVariableCount(), 0.0), variables(natural.size());
+  ElementHistory history;
+  history.variables = natural.data();
+  gaussStresses(X, u, history, out, variables.data());
+}
+
+template <CellType T, class Law>
+void PlaneElement<T, Law>::gaussGeometry(const Coords& X, double* xy, double* weightDet) const {
   for (int q = 0; q < table_.size(); ++q) {
     if (xy) {
       const Eigen::Vector2d x = X.transpose() * table_.values(q);
@@ -74,5 +96,10 @@ template class PlaneElement<CellType::TRIA6>;
 template class PlaneElement<CellType::QUAD4>;
 template class PlaneElement<CellType::QUAD8>;
 template class PlaneElement<CellType::QUAD9>;
+template class PlaneElement<CellType::TRIA3, BehaviourLaw>;
+template class PlaneElement<CellType::TRIA6, BehaviourLaw>;
+template class PlaneElement<CellType::QUAD4, BehaviourLaw>;
+template class PlaneElement<CellType::QUAD8, BehaviourLaw>;
+template class PlaneElement<CellType::QUAD9, BehaviourLaw>;
 
 }  // namespace aster::mechanics

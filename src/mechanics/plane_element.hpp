@@ -4,15 +4,20 @@
 // Local DOF order is node-major: (ux_1, uy_1, ux_2, uy_2, ...), in the cell's
 // node order; node coordinates X are the reference (initial) ones.
 //
-// PETIT (small strain): eps = sym(grad u), sigma = elasticity(eps);
-//   f = int B^T sigma, K = int B^T D B (constant).
-// GROT_GDEP (total Lagrangian Saint Venant-Kirchhoff): F = I + grad_X u,
-//   E = (F^T F - I)/2, S = elasticity(E) (PK2), P = F S (PK1);
+// The element owns the kinematics and loops over the Gauss points; at each the
+// behaviour law (behaviour_law.hpp, the template parameter Law) maps the strain
+// measure to the stress and the tangent D = dS/dE:
+// PETIT (small strain): eps = sym(grad u), sigma = law(eps);
+//   f = int B^T sigma, K = int B^T D B.
+// GROT_GDEP (total Lagrangian): F = I + grad_X u, E = (F^T F - I)/2,
+//   S = law(E) (PK2), P = F S (PK1); with ELAS this is Saint Venant-Kirchhoff.
 //   f_ai = int P_iJ dN_a/dX_J, K = exact derivative of f:
 //   material part int B(F)^T D B(F) + geometric part int (grad N_a . S grad N_b) I.
 // Stresses at Gauss points: Cauchy for PETIT; PK2 for GROT_GDEP (what code_aster
 // stores in SIEF_ELGA for GROT_GDEP), components SIXX, SIYY, SIZZ, SIXY.
 #pragma once
+#include <memory>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -20,7 +25,10 @@
 #include "fem/isoparametric.hpp"
 #include "fem/quadrature.hpp"
 #include "fem/shape_table.hpp"
-#include "mechanics/plane_elasticity.hpp"
+#include "mechanics/behaviour_law.hpp"
+#include "mechanics/element_history.hpp"
+#include "mechanics/isotropic_elasticity.hpp"
+#include "mechanics/modelling.hpp"
 
 namespace aster::mechanics {
 
@@ -32,7 +40,9 @@ using fem::CellType;
 enum class KernelBuild { Baseline, Avx2Fma };
 bool kernelBuildAvailable(KernelBuild build);
 
-template <CellType T>
+// Law: IsotropicElasticity (inlined, built for AVX2 too) or BehaviourLaw (any
+// law, through its virtual integrate()).
+template <CellType T, class Law = IsotropicElasticity>
 class PlaneElement {
  public:
   using C = fem::Cell<T>;
@@ -44,21 +54,34 @@ class PlaneElement {
   static constexpr int stressComponents = 4;        // SIXX, SIYY, SIZZ, SIXY
 
   // Full integration (fem::fullSurfaceRule) unless a rule is given.
-  PlaneElement(const PlaneElasticity& material, Kinematics kinematics);
-  PlaneElement(const PlaneElasticity& material, Kinematics kinematics, const fem::QuadratureRule<2>& rule);
+  PlaneElement(std::shared_ptr<const Law> law, Kinematics kinematics);
+  PlaneElement(std::shared_ptr<const Law> law, Kinematics kinematics, const fem::QuadratureRule<2>& rule);
+  // A copy of `law`, a Law or a class derived from it.
+  template <class Concrete, std::enable_if_t<std::is_base_of_v<Law, Concrete>, int> = 0>
+  PlaneElement(const Concrete& law, Kinematics kinematics)
+      : PlaneElement(std::shared_ptr<const Law>(std::make_shared<Concrete>(law)), kinematics) {}
 
   int gaussPointCount() const { return table_.size(); }
-  const PlaneElasticity& material() const { return material_; }
+  const Law& law() const { return *law_; }
+  int internalVariableCount() const { return law_->internalVariableCount(); }
   Kinematics kinematics() const { return kinematics_; }
   KernelBuild build() const { return build_; }
   // Throws aster::Error when the build is not available on this CPU.
   void setBuild(KernelBuild build);
 
-  // Internal force f(u) and tangent K = df/du; either output may be null.
+  // Internal force f(u) and tangent K = df/du from the state `history`; either
+  // output may be null. variables: the law's new internal variables, point after
+  // point (gaussPointCount() * internalVariableCount() entries; null when none).
+  void internalForce(const Coords& X, const Vector& u, const ElementHistory& history, double* variables, Vector* f,
+                     Matrix* K) const;
+  // From the natural state; the new internal variables are dropped.
   void internalForce(const Coords& X, const Vector& u, Vector* f, Matrix* K) const;
 
   // Gauss point stresses, stressComponents values per point, point after point
-  // (out has gaussPointCount() * 4 entries).
+  // (out has gaussPointCount() * 4 entries), and the new internal variables as above.
+  void gaussStresses(const Coords& X, const Vector& u, const ElementHistory& history, double* out,
+                     double* variables) const;
+  // From the natural state.
   void gaussStresses(const Coords& X, const Vector& u, double* out) const;
 
   // Gauss point reference coordinates (x, y per point) and weight * detJ (one
@@ -66,16 +89,21 @@ class PlaneElement {
   void gaussGeometry(const Coords& X, double* xy, double* weightDet) const;
 
  private:
-  PlaneElasticity material_;
+  std::shared_ptr<const Law> law_;
   Kinematics kinematics_;
   fem::ShapeTable<T> table_;
   KernelBuild build_;
 };
 
 extern template class PlaneElement<CellType::TRIA3>;
+extern template class PlaneElement<CellType::TRIA3, BehaviourLaw>;
 extern template class PlaneElement<CellType::TRIA6>;
+extern template class PlaneElement<CellType::TRIA6, BehaviourLaw>;
 extern template class PlaneElement<CellType::QUAD4>;
+extern template class PlaneElement<CellType::QUAD4, BehaviourLaw>;
 extern template class PlaneElement<CellType::QUAD8>;
+extern template class PlaneElement<CellType::QUAD8, BehaviourLaw>;
 extern template class PlaneElement<CellType::QUAD9>;
+extern template class PlaneElement<CellType::QUAD9, BehaviourLaw>;
 
 }  // namespace aster::mechanics

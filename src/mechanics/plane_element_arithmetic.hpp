@@ -1,16 +1,20 @@
 // The arithmetic of the plane element (see plane_element.hpp for the formulas),
-// as functions of the tabulated shapes and the material. It is compiled twice:
+// as functions of the tabulated shapes and the behaviour law. It is compiled twice:
 // by plane_element.cpp for baseline x86-64 and by plane_element_avx2.cpp for
 // AVX2 + FMA, the build chosen at run time. The functions have internal linkage
 // (an anonymous namespace) so that the linker never merges the two builds, and
-// the AVX2 entry points are flattened so that no inline function of Eigen or of
-// fem/ is emitted from AVX2 code (tests/mechanics/avx2_symbols.cmake checks).
+// the AVX2 entry points are flattened so that no inline function of Eigen, of
+// fem/ or of the law is emitted from AVX2 code (tests/mechanics/avx2_symbols.cmake
+// checks).
 #pragma once
 #include <Eigen/Core>
 
 #include "fem/isoparametric.hpp"
 #include "fem/shape_table.hpp"
-#include "mechanics/plane_elasticity.hpp"
+#include "mechanics/behaviour_law.hpp"
+#include "mechanics/isotropic_elasticity.hpp"
+#include "mechanics/modelling.hpp"
+#include "mechanics/plane_element.hpp"
 
 namespace aster::mechanics::arithmetic {
 namespace {
@@ -42,14 +46,80 @@ void strainAt(Kinematics kinematics, const typename fem::Cell<T>::Gradients& G, 
   }
 }
 
-// With g_a the gradient of N_a, h_a = F g_a and the isotropic law S = lambda' tr(E) I + 2 mu E,
-// the 2x2 block of nodes a, b of the tangent is (index notation, i, k in-plane)
-//   K_ab(i,k) = lambda' h_ai h_bk + mu ((F F^T)_ik g_a.g_b + h_bi h_ak) + (g_a . S g_b) delta_ik,
-// the last term (geometric) for large displacements only; and f_a = F S g_a. Written for
-// the blocks b >= a, then mirrored: a third of the flops of B^T D B with 16 x 3 matrices.
-template <CellType T, class Vector, class Matrix>
-void internalForce(const fem::ShapeTable<T>& table, const PlaneElasticity& material, Kinematics kinematics,
-                   const fem::NodeCoords<T>& X, const Vector& u, Vector* f, Matrix* K) {
+// The law's response at point q, from the strain there and the element's history.
+template <CellType T, class Law>
+void integrateLaw(const Law& law, Kinematics kinematics, const typename fem::Cell<T>::Gradients& G,
+                  const Eigen::Matrix2d& strain, const ElementHistory& history, int q, double* variables,
+                  LawOutput<typename Law::Tangent>& out, bool withTangent) {
+  LawInput in;
+  in.strain = strain;
+  const int count = law.internalVariableCount();
+  out.variables = count ? variables + q * count : nullptr;
+  if constexpr (Law::kUsesHistory) {
+    static constexpr double kNaturalStress[4] = {0, 0, 0, 0};
+    Eigen::Matrix2d previous = Eigen::Matrix2d::Zero();
+    if (history.displacement) {
+      Eigen::Matrix2d Fn;
+      const Eigen::Map<const Eigen::Matrix<double, 2 * fem::Cell<T>::nodes, 1>> un(history.displacement);
+      strainAt<T>(kinematics, G, un, Fn, previous);
+    }
+    in.strainIncrement = strain - previous;
+    in.previousStress = history.stress ? history.stress + 4 * q : kNaturalStress;
+    in.previousVariables = count ? history.variables + q * count : nullptr;
+  }
+  law.integrate(in, out, withTangent);
+}
+
+// The material stiffness of an isotropic tangent: with g_a the gradient of N_a and
+// h_a = F g_a, the 2x2 block of nodes a, b (index notation, i, k in-plane) is
+//   K_ab(i,k) += lambda' h_ai h_bk + mu ((F F^T)_ik g_a.g_b + h_bi h_ak) + geo_ab delta_ik,
+// geo_ab = g_a . (w S) g_b the geometric term (zero for PETIT). Written for the
+// blocks b >= a: a third of the flops of B^T D B with 16 x 3 matrices.
+template <int nodes, class Matrix>
+void addStiffness(const IsotropicTangent& D, double w, const Eigen::Matrix2d& F,
+                  const Eigen::Matrix<double, nodes, 2>& G, const Eigen::Matrix<double, nodes, 2>& GS, Matrix& K) {
+  const double lambda = w * D.lambda, mu = w * D.mu;
+  const Eigen::Matrix<double, 2, nodes> h = F.lazyProduct(G.transpose());
+  const Eigen::Matrix2d FFt = mu * F * F.transpose();
+  for (int b = 0; b < nodes; ++b)
+    for (int a = 0; a <= b; ++a) {
+      const double s = G(a, 0) * G(b, 0) + G(a, 1) * G(b, 1);
+      const double geo = GS(a, 0) * G(b, 0) + GS(a, 1) * G(b, 1);
+      for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < 2; ++i)
+          K(2 * a + i, 2 * b + k) += lambda * h(i, a) * h(k, b) + mu * h(i, b) * h(k, a) + FFt(i, k) * s +
+                                     (i == k ? geo : 0.0);
+    }
+}
+
+// Any symmetric tangent D (Voigt): K_ab += B_a^T (w D) B_b + geo_ab I, with the
+// variation of the strain for node a, direction i (Voigt, 2 E12 last)
+//   B_a(:, i) = (F_i1 g_a1, F_i2 g_a2, F_i1 g_a2 + F_i2 g_a1).
+template <int nodes, class Matrix>
+void addStiffness(const VoigtTangent& D, double w, const Eigen::Matrix2d& F,
+                  const Eigen::Matrix<double, nodes, 2>& G, const Eigen::Matrix<double, nodes, 2>& GS, Matrix& K) {
+  Eigen::Matrix<double, 3, 2 * nodes> B;
+  for (int a = 0; a < nodes; ++a)
+    for (int i = 0; i < 2; ++i) {
+      B(0, 2 * a + i) = F(i, 0) * G(a, 0);
+      B(1, 2 * a + i) = F(i, 1) * G(a, 1);
+      B(2, 2 * a + i) = F(i, 0) * G(a, 1) + F(i, 1) * G(a, 0);
+    }
+  const Eigen::Matrix<double, 3, 2 * nodes> DB = (w * D) * B;
+  for (int b = 0; b < nodes; ++b)
+    for (int a = 0; a <= b; ++a) {
+      const double geo = GS(a, 0) * G(b, 0) + GS(a, 1) * G(b, 1);
+      K.template block<2, 2>(2 * a, 2 * b) +=
+          B.template middleCols<2>(2 * a).transpose() * DB.template middleCols<2>(2 * b);
+      K(2 * a, 2 * b) += geo;
+      K(2 * a + 1, 2 * b + 1) += geo;
+    }
+}
+
+template <CellType T, class Law, class Vector, class Matrix>
+void internalForce(const fem::ShapeTable<T>& table, const Law& law, Kinematics kinematics,
+                   const fem::NodeCoords<T>& X, const Vector& u, const ElementHistory& history, double* variables,
+                   Vector* f, Matrix* K) {
   constexpr int nodes = fem::Cell<T>::nodes;
   if (f) f->setZero();
   if (K) K->setZero();
@@ -59,29 +129,38 @@ void internalForce(const fem::ShapeTable<T>& table, const PlaneElasticity& mater
     const double w = pointGradients<T>(table, X, q, G);
     Eigen::Matrix2d F, E;
     strainAt<T>(kinematics, G, u, F, E);
-    const Eigen::Matrix2d wS = w * material.stress(E);
+    LawOutput<typename Law::Tangent> response;
+    integrateLaw<T>(law, kinematics, G, E, history, q, variables, response, K != nullptr);
+    const Eigen::Matrix2d wS = w * response.stress;
     if (f) {
       Eigen::Map<Eigen::Matrix<double, 2, nodes>> fa(f->data());  // column a: f_a, node-major like f
       fa.noalias() += (F * wS).lazyProduct(G.transpose());
     }
     if (K) {
-      const double lambda = w * material.planeLambda(), mu = w * material.mu();
-      const Eigen::Matrix<double, 2, nodes> h = F.lazyProduct(G.transpose());
-      const Eigen::Matrix2d FFt = mu * F * F.transpose();
       const Eigen::Matrix<double, nodes, 2> GS = geometric ? Eigen::Matrix<double, nodes, 2>(G * wS)
                                                            : Eigen::Matrix<double, nodes, 2>::Zero();
-      for (int b = 0; b < nodes; ++b)
-        for (int a = 0; a <= b; ++a) {
-          const double s = G(a, 0) * G(b, 0) + G(a, 1) * G(b, 1);
-          const double geo = GS(a, 0) * G(b, 0) + GS(a, 1) * G(b, 1);
-          for (int k = 0; k < 2; ++k)
-            for (int i = 0; i < 2; ++i)
-              (*K)(2 * a + i, 2 * b + k) += lambda * h(i, a) * h(k, b) + mu * h(i, b) * h(k, a) + FFt(i, k) * s +
-                                            (i == k ? geo : 0.0);
-        }
+      addStiffness<nodes>(response.tangent, w, F, G, GS, *K);
     }
   }
   if (K) K->template triangularView<Eigen::StrictlyLower>() = K->transpose();
+}
+
+template <CellType T, class Law, class Vector>
+void gaussStresses(const fem::ShapeTable<T>& table, const Law& law, Kinematics kinematics,
+                   const fem::NodeCoords<T>& X, const Vector& u, const ElementHistory& history, double* out,
+                   double* variables) {
+  typename fem::Cell<T>::Gradients G;
+  for (int q = 0; q < table.size(); ++q) {
+    pointGradients<T>(table, X, q, G);
+    Eigen::Matrix2d F, E;
+    strainAt<T>(kinematics, G, u, F, E);
+    LawOutput<typename Law::Tangent> response;
+    integrateLaw<T>(law, kinematics, G, E, history, q, variables, response, false);
+    out[4 * q + 0] = response.stress(0, 0);
+    out[4 * q + 1] = response.stress(1, 1);
+    out[4 * q + 2] = response.stressZZ;
+    out[4 * q + 3] = response.stress(0, 1);
+  }
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// The element arithmetic compiled with -mavx2 -mfma, and with Eigen's static
+// The element arithmetic with the inlined isotropic law (which has neither
+// history nor internal variables) compiled with -mavx2 -mfma, and with Eigen's static
 // alignment kept at 16 bytes so that the matrices passed in have the layout of
 // the baseline build (src/CMakeLists.txt). flatten inlines every Eigen and fem/
 // function into these entry points, so no AVX2 copy of a shared inline function
@@ -14,15 +15,15 @@
 namespace aster::mechanics::avx2 {
 
 template <fem::CellType T>
-[[gnu::flatten]] void internalForce(const fem::ShapeTable<T>& table, const PlaneElasticity& material,
+[[gnu::flatten]] void internalForce(const fem::ShapeTable<T>& table, const IsotropicElasticity& law,
                                     Kinematics kinematics, const fem::NodeCoords<T>& X, const Vector<T>& u,
                                     Vector<T>* f, Matrix<T>* K) {
-  arithmetic::internalForce<T>(table, material, kinematics, X, u, f, K);
+  arithmetic::internalForce<T>(table, law, kinematics, X, u, ElementHistory{}, nullptr, f, K);
 }
 
 #define ASTER_INSTANTIATE(T)                                                                                   \
   template void internalForce<fem::CellType::T>(const fem::ShapeTable<fem::CellType::T>&,                     \
-                                                const PlaneElasticity&, Kinematics,                            \
+                                                const IsotropicElasticity&, Kinematics,                        \
                                                 const fem::NodeCoords<fem::CellType::T>&,                      \
                                                 const Vector<fem::CellType::T>&, Vector<fem::CellType::T>*,    \
                                                 Matrix<fem::CellType::T>*);

@@ -11,9 +11,7 @@ struct ElasticMaterial {
   double NU = 0.0;
   double RHO = 0.0;
   bool hasRho = false;
-  // Lamé coefficients (3D): lambda = E nu / ((1+nu)(1-2nu)), mu = E / (2(1+nu)).
-  double lambda() const { return E * NU / ((1 + NU) * (1 - 2 * NU)); }
-  double mu() const { return E / (2 * (1 + NU)); }
+  // The Lame constants are the law's: mechanics::IsotropicElasticity.
 };
 
 using MaterialPtr = std::shared_ptr<const ElasticMaterial>;

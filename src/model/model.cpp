@@ -4,14 +4,6 @@
 
 namespace aster::model {
 
-Modelisation modelisationFromName(const std::string& word) {
-  if (word == "D_PLAN") return Modelisation::PlaneStrain;
-  if (word == "C_PLAN") return Modelisation::PlaneStress;
-  throw Error("MODELISATION='" + word + "' is not available; aster-lite has 'D_PLAN' and 'C_PLAN'");
-}
-
-const char* modelisationName(Modelisation m) { return m == Modelisation::PlaneStrain ? "D_PLAN" : "C_PLAN"; }
-
 Model::Model(std::shared_ptr<mesh::Mesh> mesh)
     : mesh_(std::move(mesh)),
       assigned_(mesh_->cellCount(), 0),

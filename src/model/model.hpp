@@ -7,14 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "mechanics/modelling.hpp"
 #include "mesh/mesh.hpp"
 
 namespace aster::model {
 
-enum class Modelisation { PlaneStrain, PlaneStress };  // D_PLAN, C_PLAN
-
-Modelisation modelisationFromName(const std::string& word);
-const char* modelisationName(Modelisation m);
+// D_PLAN, C_PLAN: the element's plane hypothesis (mechanics/modelling.hpp).
+using Modelisation = mechanics::PlaneHypothesis;
 
 class Model {
  public:

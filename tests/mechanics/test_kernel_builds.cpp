@@ -25,7 +25,7 @@ void buildsAgree() {
     for (auto k : {Kinematics::SmallStrain, Kinematics::TotalLagrangianSVK}) {
       SCOPED_TRACE(fem::cellName(T));
       const auto X = distortedCell<T>(7);
-      E vector(PlaneElasticity(210e3, 0.3, h), k), baseline = vector;
+      E vector(IsotropicElasticity(210e3, 0.3, h), k), baseline = vector;
       EXPECT_EQ(vector.build(), KernelBuild::Avx2Fma);  // the default where the CPU has it
       baseline.setBuild(KernelBuild::Baseline);
       typename E::Vector u;
@@ -54,7 +54,7 @@ TEST(KernelBuilds, Quad9) { buildsAgree<CellType::QUAD9>(); }
 
 TEST(KernelBuilds, BaselineIsAlwaysThere) {
   EXPECT_TRUE(kernelBuildAvailable(KernelBuild::Baseline));
-  PlaneElement<CellType::QUAD8> e(PlaneElasticity(1.0, 0.3, PlaneHypothesis::PlaneStrain),
+  PlaneElement<CellType::QUAD8> e(IsotropicElasticity(1.0, 0.3, PlaneHypothesis::PlaneStrain),
                                   Kinematics::SmallStrain);
   e.setBuild(KernelBuild::Baseline);
   EXPECT_EQ(e.build(), KernelBuild::Baseline);

@@ -25,7 +25,7 @@ void rigidMotion() {
   for (int a = 0; a < E::nodes; ++a)
     u.template segment<2>(2 * a) = (R - Eigen::Matrix2d::Identity()) * X.row(a).transpose() + Eigen::Vector2d(0.7, -2.1);
   for (auto h : {PlaneHypothesis::PlaneStrain, PlaneHypothesis::PlaneStress}) {
-    const E element(PlaneElasticity(1000.0, 0.3, h), Kinematics::TotalLagrangianSVK);
+    const E element(IsotropicElasticity(1000.0, 0.3, h), Kinematics::TotalLagrangianSVK);
     typename E::Vector f;
     element.internalForce(X, u, &f, nullptr);
     EXPECT_LT(f.norm(), 1e-11);
@@ -34,7 +34,7 @@ void rigidMotion() {
     for (double v : s) EXPECT_NEAR(v, 0.0, 1e-11);
     // The small-strain element is not rotation invariant: a sanity check that
     // the test would catch a wrong kinematics.
-    const E small(PlaneElasticity(1000.0, 0.3, h), Kinematics::SmallStrain);
+    const E small(IsotropicElasticity(1000.0, 0.3, h), Kinematics::SmallStrain);
     small.internalForce(X, u, &f, nullptr);
     EXPECT_GT(f.norm(), 1.0);
   }
@@ -50,7 +50,7 @@ void tangentMatchesDifferences() {
       for (int trial = 0; trial < 3; ++trial) {
         SCOPED_TRACE(std::string(fem::cellName(T)) + " trial " + std::to_string(trial));
         const auto X = distortedCell<T>(100 + trial);
-        const E element(PlaneElasticity(3.0, 0.25, h), k);
+        const E element(IsotropicElasticity(3.0, 0.25, h), k);
         typename E::Vector u;
         for (int i = 0; i < E::dofs; ++i) u(i) = 0.15 * uni(rng);
         typename E::Vector f, fp, fm;
@@ -113,7 +113,7 @@ TEST(LargeStrain, UniaxialSaintVenantKirchhoffByHand) {
       u(2 * a) = (l - 1) * X(a, 0);
       u(2 * a + 1) = (m - 1) * X(a, 1);
     }
-    const PlaneElement<CellType::QUAD4> element(PlaneElasticity(young, nu, c.h), Kinematics::TotalLagrangianSVK);
+    const PlaneElement<CellType::QUAD4> element(IsotropicElasticity(young, nu, c.h), Kinematics::TotalLagrangianSVK);
     double s[16];
     element.gaussStresses(X, u, s);
     for (int q = 0; q < 4; ++q) {
@@ -130,9 +130,9 @@ TEST(LargeStrain, UniaxialSaintVenantKirchhoffByHand) {
   }
 }
 
-TEST(PlaneElasticity, RejectsBadData) {
-  EXPECT_THROW(PlaneElasticity(0.0, 0.3, PlaneHypothesis::PlaneStrain), Error);
-  EXPECT_THROW(PlaneElasticity(1.0, 0.5, PlaneHypothesis::PlaneStrain), Error);
-  const PlaneElasticity m(1.0, 0.3, PlaneHypothesis::PlaneStress);
+TEST(IsotropicElasticity, RejectsBadData) {
+  EXPECT_THROW(IsotropicElasticity(0.0, 0.3, PlaneHypothesis::PlaneStrain), Error);
+  EXPECT_THROW(IsotropicElasticity(1.0, 0.5, PlaneHypothesis::PlaneStrain), Error);
+  const IsotropicElasticity m(1.0, 0.3, PlaneHypothesis::PlaneStress);
   EXPECT_NEAR(m.planeLambda(), 0.3 / (1 - 0.09), 1e-15);  // E nu / (1 - nu^2)
 }

@@ -31,7 +31,7 @@ void smallStrainPatch(PlaneHypothesis hypothesis) {
   fem::ElementDofs dofs;
   dofs.addCells(p.cells, map, 2);
   const fem::AssemblyPattern pattern(map.dofCount(), dofs);
-  const PlaneElasticity material(200.0, 0.3, hypothesis);
+  const IsotropicElasticity material(200.0, 0.3, hypothesis);
   const PlaneElement<T> element(material, Kinematics::SmallStrain);
 
   const Eigen::Matrix2d A = gradient();
@@ -103,7 +103,7 @@ void homogeneousLargeStrainPatch(PlaneHypothesis hypothesis) {
   fem::ElementDofs dofs;
   dofs.addCells(p.cells, map, 2);
   const fem::AssemblyPattern pattern(map.dofCount(), dofs);
-  const PlaneElement<T> element(PlaneElasticity(1.0, 0.3, hypothesis), Kinematics::TotalLagrangianSVK);
+  const PlaneElement<T> element(IsotropicElasticity(1.0, 0.3, hypothesis), Kinematics::TotalLagrangianSVK);
   Eigen::Matrix2d Fh;
   Fh << 1.3, 0.4, -0.2, 0.8;
   Eigen::VectorXd U(map.dofCount());

@@ -1,4 +1,4 @@
-#include "mechanics/plane_elasticity.hpp"
+#include "mechanics/isotropic_elasticity.hpp"
 
 #include <string>
 
@@ -6,7 +6,7 @@
 
 namespace aster::mechanics {
 
-PlaneElasticity::PlaneElasticity(double young, double poisson, PlaneHypothesis hypothesis)
+IsotropicElasticity::IsotropicElasticity(double young, double poisson, PlaneHypothesis hypothesis)
     : young_(young), poisson_(poisson), hypothesis_(hypothesis) {
   if (!(young > 0)) throw Error("elastic material: Young's modulus E must be > 0, got " + std::to_string(young));
   if (!(poisson > -1 && poisson < 0.5))
@@ -17,6 +17,12 @@ PlaneElasticity::PlaneElasticity(double young, double poisson, PlaneHypothesis h
   voigt_ << planeLambda_ + 2 * mu_, planeLambda_, 0,  //
       planeLambda_, planeLambda_ + 2 * mu_, 0,        //
       0, 0, mu_;
+}
+
+void IsotropicElasticity::integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const {
+  out.stress = stress(in.strain);
+  out.stressZZ = outOfPlaneStress(in.strain);
+  if (withTangent) out.tangent = voigt_;
 }
 
 }  // namespace aster::mechanics

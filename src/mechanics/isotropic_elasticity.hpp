@@ -1,20 +1,32 @@
-// Linear isotropic elasticity in the plane (per unit thickness), shared by the
-// small-strain (PETIT) and the Saint Venant-Kirchhoff (GROT_GDEP) kinematics:
+// Linear isotropic elasticity in the plane (ELAS), per unit thickness, the same
+// law for the small-strain (PETIT) and the Saint Venant-Kirchhoff (GROT_GDEP)
+// kinematics:
 //   stress = lambda' tr(e) I + 2 mu e  on the in-plane 2x2 strain e,
 // with lambda' = lambda for plane strain (D_PLAN) and
 // lambda' = 2 lambda mu / (lambda + 2 mu) for plane stress (C_PLAN, sigma_zz = 0).
+// The program's one source of the Lame constants.
 #pragma once
 #include <Eigen/Core>
 
+#include "mechanics/behaviour_law.hpp"
+#include "mechanics/modelling.hpp"
+
 namespace aster::mechanics {
 
-enum class PlaneHypothesis { PlaneStrain, PlaneStress };      // D_PLAN, C_PLAN
-enum class Kinematics { SmallStrain, TotalLagrangianSVK };    // PETIT, GROT_GDEP
+// The tangent of this law, lambda' I x I + 2 mu I_sym: the element contracts it
+// with the strain variations in a third of the flops of a general VoigtTangent.
+struct IsotropicTangent {
+  double lambda = 0;  // lambda'
+  double mu = 0;
+};
 
-class PlaneElasticity {
+class IsotropicElasticity final : public BehaviourLaw {
  public:
+  using Tangent = IsotropicTangent;
+  static constexpr bool kUsesHistory = false;
+
   // Throws aster::Error unless young > 0 and -1 < poisson < 0.5.
-  PlaneElasticity(double young, double poisson, PlaneHypothesis hypothesis);
+  IsotropicElasticity(double young, double poisson, PlaneHypothesis hypothesis);
 
   double young() const { return young_; }
   double poisson() const { return poisson_; }
@@ -33,6 +45,15 @@ class PlaneElasticity {
   }
   // Voigt matrix for (e_xx, e_yy, 2 e_xy) -> (s_xx, s_yy, s_xy).
   const Eigen::Matrix3d& voigt() const { return voigt_; }
+
+  int internalVariableCount() const override { return 0; }
+  // The form the element kernels inline.
+  void integrate(const LawInput& in, LawOutput<IsotropicTangent>& out, bool withTangent) const {
+    out.stress = stress(in.strain);
+    out.stressZZ = outOfPlaneStress(in.strain);
+    if (withTangent) out.tangent = {planeLambda_, mu_};
+  }
+  void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const override;
 
  private:
   double young_, poisson_;

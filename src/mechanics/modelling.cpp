@@ -1,0 +1,23 @@
+#include "mechanics/modelling.hpp"
+
+#include "core/error.hpp"
+
+namespace aster::mechanics {
+
+PlaneHypothesis planeHypothesisFromName(const std::string& word) {
+  if (word == "D_PLAN") return PlaneHypothesis::PlaneStrain;
+  if (word == "C_PLAN") return PlaneHypothesis::PlaneStress;
+  throw Error("MODELISATION must be 'D_PLAN' or 'C_PLAN', got '" + word + "'");
+}
+
+const char* planeHypothesisName(PlaneHypothesis hypothesis) {
+  return hypothesis == PlaneHypothesis::PlaneStrain ? "D_PLAN" : "C_PLAN";
+}
+
+Kinematics kinematicsFromName(const std::string& word) {
+  if (word == "PETIT") return Kinematics::SmallStrain;
+  if (word == "GROT_GDEP" || word == "GREEN_LAGRANGE") return Kinematics::TotalLagrangianSVK;
+  throw Error("DEFORMATION must be 'PETIT', 'GROT_GDEP' or 'GREEN_LAGRANGE', got '" + word + "'");
+}
+
+}  // namespace aster::mechanics

@@ -1,0 +1,23 @@
+// The two choices that fix a plane element's formulation, each one enum for the
+// whole program: the plane hypothesis (AFFE_MODELE's MODELISATION) and the strain
+// measure (COMPORTEMENT's DEFORMATION). The element owns both; a behaviour law
+// (behaviour_law.hpp) only maps the strain measure to a stress.
+#pragma once
+#include <string>
+
+namespace aster::mechanics {
+
+// D_PLAN (plane strain, e_zz = 0) and C_PLAN (plane stress, s_zz = 0).
+enum class PlaneHypothesis { PlaneStrain, PlaneStress };
+
+// PETIT: eps = sym(grad u), Cauchy stress, reference configuration.
+// GROT_GDEP (also GREEN_LAGRANGE): total Lagrangian, Green-Lagrange strain E and
+// second Piola-Kirchhoff stress S.
+enum class Kinematics { SmallStrain, TotalLagrangianSVK };
+
+// Throw aster::Error naming the word and the choices.
+PlaneHypothesis planeHypothesisFromName(const std::string& word);  // D_PLAN, C_PLAN
+const char* planeHypothesisName(PlaneHypothesis hypothesis);
+Kinematics kinematicsFromName(const std::string& word);  // PETIT, GROT_GDEP, GREEN_LAGRANGE
+
+}  // namespace aster::mechanics
