@@ -20,7 +20,7 @@ local function with_check(fact)
     },
     SIMP{ 'ORDRE_GRANDEUR', typ = 'R', val_min = 0.0,
           fr = "Magnitude used for an absolute comparison when VALE_CALC is (nearly) zero." },
-    SIMP{ 'LEGENDE', typ = 'TXM', fr = "Label of the check in the output." },
+    SIMP{ 'LEGENDE', typ = 'TXM', defaut = 'XXXX', fr = "Label of the check in the output." },
   }
   for _, k in ipairs(keys) do fact[#fact + 1] = k end
   return fact

@@ -120,7 +120,7 @@ ConceptPtr extr(const Keywords& k, const FieldType& type, const std::string& typ
   }
   const auto result = k.concept<ResultConcept>("RESULTAT");
   const std::string name = k.text("NOM_CHAM");
-  if (k.text("INTERPOL", "NON") != "NON")
+  if (k.text("INTERPOL") != "NON")
     throw Error("INTERPOL='" + k.text("INTERPOL") + "' is not available yet: give a stored INST or NUME_ORDRE");
   const ResultInstant& inst = instantOf(*result, k);
   for (const auto& g : inst.gauss)

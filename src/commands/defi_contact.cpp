@@ -42,13 +42,13 @@ auto ofGroups(const Keywords& z, const std::string& key, F&& lookup) {
 ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   auto model = static_cast<ModelConcept&>(*k.conceptPtr("MODELE")).model;
   const auto& mesh = model->mesh();
-  if (k.text("FROTTEMENT", "SANS") != "SANS")
+  if (k.text("FROTTEMENT") != "SANS")
     throw Error("FROTTEMENT='" + k.text("FROTTEMENT") + "': aster-lite's contact is frictionless (FROTTEMENT='SANS')");
   analysis::ContactSettings settings;
-  const std::string formulation = k.text("FORMULATION", "DISCRETE");
+  const std::string formulation = k.text("FORMULATION");
   settings.continueFormulation = formulation == "CONTINUE";
   settings.info = static_cast<int>(k.integer("INFO"));
-  const bool checkNormals = k.text("VERI_NORM", "OUI") == "OUI";
+  const bool checkNormals = k.text("VERI_NORM") == "OUI";
   std::vector<analysis::ContactZone> zones;
   for (const auto& z : k.factor("ZONE")) {
     analysis::ContactZone zone;
@@ -86,10 +86,10 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
     } else {
       if (algo == "PENALISATION") zs.penalty = positive(z, "COEF_PENA_CONT");
       else zs.rho = positive(z, "COEF_CONT");
-      zs.multipliers = z.text("INTERPOL_LAGS_C", "QUADRATIQUE") == "QUADRATIQUE"
+      zs.multipliers = z.text("INTERPOL_LAGS_C") == "QUADRATIQUE"
                            ? contact::MultiplierInterpolation::Quadratic
                            : contact::MultiplierInterpolation::Linear;
-      const std::string integration = z.text("INTEGRATION", "GAUSS");
+      const std::string integration = z.text("INTEGRATION");
       if (integration == "GAUSS") {
         zs.integration = contact::ContactIntegration::Gauss;
         zs.gaussPoints = static_cast<int>(z.integer("ORDRE_INT"));
@@ -101,7 +101,7 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
       } else {
         zs.integration = contact::ContactIntegration::Nodes;  // 'AUTO', the validator allows nothing else
       }
-      const std::string init = z.text("CONTACT_INIT", "INTERPENETRE");
+      const std::string init = z.text("CONTACT_INIT");
       zs.initialStatus = init == "OUI"   ? contact::ForcedStatus::Contact
                          : init == "NON" ? contact::ForcedStatus::Separated
                                          : contact::ForcedStatus::None;

@@ -184,7 +184,7 @@ ConceptPtr affe(const Keywords& k, const std::string& typeCham, const std::strin
       }
     }
   }
-  return b.build(typeCham, k.text("PROL_ZERO", "NON") == "OUI", functions, "AFFE: the field is empty");
+  return b.build(typeCham, k.text("PROL_ZERO") == "OUI", functions, "AFFE: the field is empty");
 }
 
 // ------------------------------------------------------------------ DISC
@@ -209,7 +209,7 @@ ConceptPtr disc(const Keywords& k, const std::string& typeCham, const std::strin
                   "' keeps the components of the nodal field (rename them first with OPERATION='ASSE', NOM_CMP_RESU)");
     }
   }
-  const bool prolZero = k.text("PROL_ZERO", "NON") == "OUI";
+  const bool prolZero = k.text("PROL_ZERO") == "OUI";
   Builder b(model, quantity);
   const auto& mesh = model->mesh();
   const std::size_t nc = src->field.components.size();
@@ -385,7 +385,7 @@ ConceptPtr asse(const Keywords& k, const std::string& typeCham, const std::strin
     }
   }
   if (!any) throw Error("ASSE: no cell of the designated parts carries the source fields");
-  return b.build(typeCham, k.text("PROL_ZERO", "NON") == "OUI", false, "ASSE: the field is empty");
+  return b.build(typeCham, k.text("PROL_ZERO") == "OUI", false, "ASSE: the field is empty");
 }
 
 // ------------------------------------------------------------------ EXTR
@@ -396,7 +396,7 @@ ConceptPtr extr(const Keywords& k, const std::string& typeCham, const std::strin
                 "are CREA_CHAMP{OPERATION='DISC', TYPE_CHAM='ELGA_GEOM_R', MODELE=..., CHAM_GD=<that NOEU_GEOM_R field>}");
   const auto result = k.concept<ResultConcept>("RESULTAT");
   const std::string name = k.text("NOM_CHAM");
-  if (k.text("INTERPOL", "NON") != "NON")
+  if (k.text("INTERPOL") != "NON")
     throw Error("INTERPOL='" + k.text("INTERPOL") + "' is not available yet: give a stored INST or NUME_ORDRE");
   const ResultInstant& inst = instantOf(*result, k);
   const GaussField* g = ResultConcept::gaussField(inst, name);

@@ -105,8 +105,8 @@ std::vector<const ResultInstant*> selectInstants(const ResultConcept& r, const K
     if (out.empty()) throw Error("RESULTAT: the result holds no instant");
     return out;
   }
-  const double precision = occ.real("PRECISION", 1e-6);
-  const bool absolute = occ.text("CRITERE", "RELATIF") == "ABSOLU";
+  const double precision = occ.real("PRECISION");
+  const bool absolute = occ.text("CRITERE") == "ABSOLU";
   for (double t : times) {
     const ResultInstant* found = nullptr;
     if (absolute) {

@@ -85,17 +85,11 @@ const Value& Keywords::value(const std::string& key) const {
 }
 
 double Keywords::real(const std::string& key) const { return value(key).real; }
-double Keywords::real(const std::string& key, double fallback) const {
-  return has(key) ? real(key) : fallback;
-}
 long long Keywords::integer(const std::string& key) const {
   const Value& v = value(key);
   return v.kind == Value::Kind::Integer ? v.integer : static_cast<long long>(std::llround(v.real));
 }
 const std::string& Keywords::text(const std::string& key) const { return value(key).text; }
-std::string Keywords::text(const std::string& key, const std::string& fallback) const {
-  return has(key) ? text(key) : fallback;
-}
 
 std::vector<double> Keywords::reals(const std::string& key) const {
   std::vector<double> out;
