@@ -45,8 +45,7 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   if (k.text("FROTTEMENT") != "SANS")
     throw Error("FROTTEMENT='" + k.text("FROTTEMENT") + "': aster-lite's contact is frictionless (FROTTEMENT='SANS')");
   analysis::ContactSettings settings;
-  const std::string formulation = k.text("FORMULATION");
-  settings.continueFormulation = formulation == "CONTINUE";
+  settings.continueFormulation = k.text("FORMULATION") == "CONTINUE";
   settings.info = static_cast<int>(k.integer("INFO"));
   const bool checkNormals = k.text("VERI_NORM") == "OUI";
   std::vector<analysis::ContactZone> zones;
@@ -109,10 +108,8 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
     zones.push_back(std::move(zone));
   }
   auto c = std::make_shared<ContactConcept>();
-  c->formulation = formulation;
-  c->makeTerms = [zones, settings](const analysis::MechanicalSystem& system) {
-    return analysis::makeContactTerms(system, zones, settings);
-  };
+  c->zones = std::move(zones);
+  c->settings = settings;
   return c;
 }
 

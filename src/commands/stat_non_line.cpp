@@ -173,7 +173,8 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
 
   analysis::MechanicalSystem system(problem);
   std::unique_ptr<analysis::AdditionalTerms> terms;
-  if (k.has("CONTACT")) terms = static_cast<ContactConcept&>(*k.conceptPtr("CONTACT")).makeTerms(system);
+  if (const auto contact = k.concept<ContactConcept>("CONTACT"))
+    terms = analysis::makeContactTerms(system, contact->zones, contact->settings);
   analysis::StaticNonlinear newtonSolver(system, terms.get(), settings);
 
   std::shared_ptr<ResultConcept> result =
