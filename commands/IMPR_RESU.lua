@@ -1,6 +1,4 @@
--- Fields stored in a result (evol_noli).
-local NOM_CHAM = {'DEPL', 'SIEF_ELGA', 'SIEF_NOEU', 'SIGM_NOEU', 'EPSI_ELGA', 'EPSI_NOEU',
-                  'VARI_ELGA', 'FORC_NODA', 'REAC_NODA', 'CONT_NOEU', 'CONT_ELEM'}
+local NOM_CHAM = C_NOM_CHAM_INTO()
 
 return PROC{ nom = 'IMPR_RESU',
   fr = "Writes meshes, fields and results to a file: text listing, MED, GMSH or VTK.",
