@@ -11,16 +11,11 @@
 #include "contact/projection.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
+#include "core/number_format.hpp"
 #include "fem/quadrature.hpp"
 
 namespace aster::analysis {
 namespace {
-
-std::string sci(double v, int digits = 2) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*E", digits, v);
-  return buf;
-}
 
 // The components of CONT_NOEU (contact_terms.hpp).
 const std::vector<std::string> kContNoeu = {"CONT", "JEU", "RN", "RNX", "RNY"};
@@ -250,7 +245,7 @@ class DiscreteContact final : public ContactBase {
 
   std::string statusText() const override {
     return std::to_string(std::count(active_.begin(), active_.end(), true)) + " active nodes, residual " +
-           sci(residual_);
+           format::scientific(residual_, 2);
   }
   void saveStatus() override { saved_ = active_; }
   void restoreStatus() override { active_ = saved_; }
@@ -479,7 +474,7 @@ class ContinueContact final : public ContactBase {
   bool updateStatus(const Eigen::VectorXd&) override { return false; }
   std::string statusText() const override {
     return std::to_string(pointsInContact_) + " points in contact, " + std::to_string(nodesInContact_) +
-           " nodes, residual " + sci(residual_);
+           " nodes, residual " + format::scientific(residual_, 2);
   }
   // CONTACT_INIT applies again when the first step is cut and restarted.
   void saveStatus() override { savedStarted_ = started_; }

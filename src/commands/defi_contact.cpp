@@ -12,6 +12,7 @@
 #include "commands/contact_concept.hpp"
 #include "commands/model_concepts.hpp"
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "lang/operators.hpp"
 #include "analysis/contact_terms.hpp"
 
@@ -22,9 +23,7 @@ namespace {
 double positive(const Keywords& z, const std::string& key) {
   const double v = z.real(key);
   if (!(v > 0) || !std::isfinite(v)) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.6g", v);
-    throw Error(z.path + "/" + key + " = " + text + ": the coefficient must be > 0");
+    throw Error(z.path + "/" + key + " = " + format::significant(v, 6) + ": the coefficient must be > 0");
   }
   return v;
 }

@@ -21,6 +21,7 @@
 #include "commands/function_concepts.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
+#include "core/number_format.hpp"
 #include "expr/tabulated.hpp"
 #include "lang/operators.hpp"
 
@@ -82,11 +83,7 @@ double logSlope(const Curve& c) {
   return (n * sxy - sx * sy) / d;
 }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+std::string number(double v) { return format::significant(v, 10); }
 
 // A gnuplot string expression whose value is `s`, character for character.
 // Texts and paths come from the study: in a double-quoted gnuplot string, `...`

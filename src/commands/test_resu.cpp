@@ -183,7 +183,7 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
     if (!lookup.has("PRECISION")) lookup.setSimple("PRECISION", {Value::ofReal(1e-6)});
     const ResultInstant& inst = instantOf(*r, lookup);
     What what{{"RESULTAT", session.nameOf(*r)}};
-    if (occ.has("INST")) what.push_back({"INST", post::formatNumber(inst.time)});
+    if (occ.has("INST")) what.push_back({"INST", format::asterValue(inst.time)});
     else what.push_back({"NUME_ORDRE", std::to_string(inst.index)});
     if (occ.has("PARA")) {
       const std::string p = occ.text("PARA");

@@ -21,8 +21,8 @@ ConceptPtr testTable(const Keywords& k, Session& session, ConceptPtr) {
   std::vector<std::pair<std::string, std::string>> what{{"TABLE", session.nameOf(*tc)}, {"NOM_PARA", para}};
   for (const auto& f : k.factor("FILTRE")) {
     std::string v;
-    if (f.has("VALE")) for (double x : f.reals("VALE")) v += (v.empty() ? "" : ",") + post::formatNumber(x);
-    if (f.has("VALE_I")) for (double x : f.reals("VALE_I")) v += (v.empty() ? "" : ",") + post::formatNumber(x);
+    if (f.has("VALE")) for (double x : f.reals("VALE")) v += (v.empty() ? "" : ",") + format::asterValue(x);
+    if (f.has("VALE_I")) for (double x : f.reals("VALE_I")) v += (v.empty() ? "" : ",") + format::asterValue(x);
     if (f.has("VALE_K")) for (const auto& x : f.texts("VALE_K")) v += (v.empty() ? "" : ",") + x;
     what.push_back({"FILTRE " + f.text("NOM_PARA"), f.text("CRIT_COMP") + (v.empty() ? "" : " " + v)});
   }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/number_format.hpp"
+
 namespace aster::lang {
 
 std::string visibleText(const std::string& text) {
@@ -25,7 +27,7 @@ std::string Value::describe() const {
       if (std::isnan(real))
         s << "nan";  // not "-nan", which 0/0 gives on x86
       else
-        s << real;
+        s << format::significant(real, 6);
       break;
     case Kind::Text: s << "'" << visibleText(text) << "'"; break;
     case Kind::Concept: s << "a " << (concept ? concept->typeName() : "null concept"); break;
