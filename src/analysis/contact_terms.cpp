@@ -107,10 +107,7 @@ class ContactBase : public AdditionalTerms {
     return contact::Segment::seg2(position(n[0], U), position(n[1], U));
   }
   void appendDofs(int cell, std::vector<int>& dofs) const {
-    for (int n : mesh_.cellNodes(cell)) {
-      dofs.push_back(system_.dof(n, 0));
-      dofs.push_back(system_.dof(n, 1));
-    }
+    system_.dofMap().appendNodeDofs(mesh_.cellNodes(cell).begin(), mesh_.cellNodes(cell).end(), 2, dofs);
   }
   std::vector<contact::Segment> masters(const ContactZone& z, const Eigen::VectorXd& U) const {
     std::vector<contact::Segment> out;
@@ -284,7 +281,8 @@ class DiscreteContact final : public ContactBase {
   };
   std::vector<int> nodeDofs(std::size_t i) const {
     const auto& sn = nodes_[i];
-    std::vector<int> dofs = {system_.dof(sn.node, 0), system_.dof(sn.node, 1)};
+    std::vector<int> dofs;
+    system_.dofMap().appendNodeDofs(&sn.node, &sn.node + 1, 2, dofs);
     if (sn.segment >= 0) appendDofs(zones_[sn.zone].masterCells[sn.segment], dofs);
     dofs.push_back(first_ + static_cast<int>(i));
     return dofs;

@@ -82,10 +82,7 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
       it = cache.emplace(key, kernels_.back().get()).first;
     }
     std::vector<int> d;
-    for (int n : mesh.cellNodes(c)) {
-      d.push_back(dofs_.dof(n, 0));
-      d.push_back(dofs_.dof(n, 1));
-    }
+    dofs_.appendNodeDofs(mesh.cellNodes(c).begin(), mesh.cellNodes(c).end(), 2, d);
     cells_.push_back({c, it->second, elements_.add(d)});
   }
   if (cells_.size() >= kParallelCells) {
@@ -110,10 +107,7 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
     for (const auto& p : applied.load->pressures)
       for (int c : p.cells) {
         std::vector<int> d;
-        for (int n : mesh.cellNodes(c)) {
-          d.push_back(dofs_.dof(n, 0));
-          d.push_back(dofs_.dof(n, 1));
-        }
+        dofs_.appendNodeDofs(mesh.cellNodes(c).begin(), mesh.cellNodes(c).end(), 2, d);
         pressureEdges_.push_back({c, elements_.add(d), &p.p, &applied});
       }
   }
