@@ -37,13 +37,7 @@ ConceptPtr recuFonction(const Keywords& k, Session&, ConceptPtr) {
     for (auto i : order) { xs.push_back(x[i]); ys.push_back(y[i]); }
     x = xs; y = ys;
   }
-  expr::TabulatedOptions opt;
-  const auto interp = k.texts("INTERPOL");
-  opt.abscissa = expr::interpolationFromName(interp.at(0));
-  opt.ordinate = expr::interpolationFromName(interp.size() > 1 ? interp[1] : interp[0]);
-  opt.left = expr::extensionFromName(k.text("PROL_GAUCHE"));
-  opt.right = expr::extensionFromName(k.text("PROL_DROITE"));
-  auto f = std::make_shared<expr::Tabulated>(k.has("NOM_PARA") ? k.text("NOM_PARA") : px, x, y, opt);
+  auto f = std::make_shared<expr::Tabulated>(k.has("NOM_PARA") ? k.text("NOM_PARA") : px, x, y, tabulatedOptionsOf(k));
   if (k.integer("INFO") >= 2) {
     std::string s = "RECU_FONCTION " + px + " -> " + py + ":\n";
     for (std::size_t i = 0; i < x.size(); ++i) s += "  " + expr::numberText(x[i]) + "  " + expr::numberText(y[i]) + "\n";
