@@ -22,6 +22,7 @@
 #include "commands/selection.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
+#include "core/number_format.hpp"
 #include "lang/session.hpp"
 #include "post/norms.hpp"
 
@@ -420,15 +421,12 @@ ConceptPtr extr(const Keywords& k, const std::string& typeCham, const std::strin
 void printField(const ElgaFieldConcept& f, const std::string& name) {
   const std::size_t nc = f.field.components.size();
   std::string s = "field " + name + " at Gauss points (" + std::to_string(f.field.cells.size()) + " cells):\n";
-  char buf[64];
   for (std::size_t k = 0; k < f.field.cells.size(); ++k)
     for (int q = 0; q < gaussPointsOf(f.field, k); ++q) {
       s += "  " + f.mesh->cellName(f.field.cells[k]) + " point " + std::to_string(q + 1);
       for (std::size_t c = 0; c < nc; ++c) {
         if (!f.present[k * nc + c]) continue;
-        std::snprintf(buf, sizeof buf, "  %s=%.6g", f.field.components[c].c_str(),
-                      f.field.values[f.field.offsets[k] + q * nc + c]);
-        s += buf;
+        s += "  " + f.field.components[c] + "=" + format::significant(f.field.values[f.field.offsets[k] + q * nc + c], 6);
       }
       s += "\n";
     }
