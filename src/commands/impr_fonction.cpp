@@ -196,7 +196,8 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
     if (k.has("TITRE")) out << "# " << k.text("TITRE") << "\n";
     for (std::size_t i = 0; i < curves.size(); ++i) {
       out << "# COURBE " << i + 1 << (curves[i].legend.empty() ? "" : ": " + curves[i].legend) << "\n";
-      out << "# " << (k.has("LEGENDE_X") ? k.text("LEGENDE_X") : "X") << "  " << (k.has("LEGENDE_Y") ? k.text("LEGENDE_Y") : "Y") << "\n";
+      out << "# " << (k.has("LEGENDE_X") ? k.text("LEGENDE_X") : "X") << "  "
+          << (k.has("LEGENDE_Y") ? k.text("LEGENDE_Y") : "Y") << "\n";
       for (std::size_t j = 0; j < curves[i].x.size(); ++j)
         out << number(curves[i].x[j]) << "  " << number(curves[i].y[j]) << "\n";
       out << "\n";
