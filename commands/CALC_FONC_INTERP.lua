@@ -7,12 +7,7 @@ return OPER{ nom = 'CALC_FONC_INTERP', sd_prod = 'fonction_sdaster', reentrant =
   SIMP{ 'LIST_PARA', typ = 'listr8_sdaster', fr = "Abscissas, from DEFI_LIST_REEL." },
   SIMP{ 'NOM_PARA', typ = 'TXM', fr = "Name of the parameter (default: the function's)." },
   SIMP{ 'NOM_RESU', typ = 'TXM', defaut = 'TOUTRESU', fr = "Name of the result." },
-  SIMP{ 'INTERPOL', typ = 'TXM', max = 2, defaut = 'LIN', into = {'LIN', 'LOG'},
-        fr = "Interpolation of the new function (one value: both axes)." },
-  SIMP{ 'PROL_GAUCHE', typ = 'TXM', defaut = 'EXCLU', into = {'CONSTANT', 'LINEAIRE', 'EXCLU'},
-        fr = "Extension left of the first abscissa." },
-  SIMP{ 'PROL_DROITE', typ = 'TXM', defaut = 'EXCLU', into = {'CONSTANT', 'LINEAIRE', 'EXCLU'},
-        fr = "Extension right of the last abscissa." },
+  C_INTERPOL_PROL(),
   SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity: 2 prints the values." },
   SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title." },
 }

@@ -1,6 +1,5 @@
 -- Fields stored in a result (evol_noli) and fields a user may create.
-local NOM_CHAM = {'DEPL', 'SIEF_ELGA', 'SIEF_NOEU', 'SIGM_NOEU', 'EPSI_ELGA', 'EPSI_NOEU',
-                  'VARI_ELGA', 'FORC_NODA', 'REAC_NODA', 'CONT_NOEU', 'CONT_ELEM'}
+local NOM_CHAM = C_NOM_CHAM_INTO()
 
 return OPER{ nom = 'CREA_CHAMP', sd_prod = {'cham_no_sdaster', 'cham_elem'}, reentrant = 'f',
   fr = "Creates a field: by assignment, extraction from a result, evaluation of functions, assembly or discretisation.",

@@ -1,6 +1,4 @@
--- Fields stored in a result (evol_noli).
-local NOM_CHAM = {'DEPL', 'SIEF_ELGA', 'SIEF_NOEU', 'SIGM_NOEU', 'EPSI_ELGA', 'EPSI_NOEU',
-                  'VARI_ELGA', 'FORC_NODA', 'REAC_NODA', 'CONT_NOEU', 'CONT_ELEM'}
+local NOM_CHAM = C_NOM_CHAM_INTO()
 
 return OPER{ nom = 'POST_ELEM', sd_prod = 'table_sdaster', reentrant = 'n',
   fr = "Integral quantities computed over cells; here the norm of a field. Returns a table.",

@@ -1,6 +1,4 @@
--- Fields stored in a result (evol_noli).
-local NOM_CHAM = {'DEPL', 'SIEF_ELGA', 'SIEF_NOEU', 'SIGM_NOEU', 'EPSI_ELGA', 'EPSI_NOEU',
-                  'VARI_ELGA', 'FORC_NODA', 'REAC_NODA', 'CONT_NOEU', 'CONT_ELEM'}
+local NOM_CHAM = C_NOM_CHAM_INTO()
 
 return OPER{ nom = 'POST_RELEVE_T', sd_prod = 'table_sdaster', reentrant = 'f',
   fr = "Extracts field values at nodes into a table (with node names, coordinates and abscissa along the group).",
@@ -20,8 +18,7 @@ return OPER{ nom = 'POST_RELEVE_T', sd_prod = 'table_sdaster', reentrant = 'f',
       SIMP{ 'NUME_ORDRE', typ = 'I', max = '**', fr = "Storage indices." },
       SIMP{ 'INST', typ = 'R', max = '**', fr = "Instants." },
       SIMP{ 'LIST_INST', typ = 'listr8_sdaster', fr = "Instants, as a list." },
-      SIMP{ 'CRITERE', typ = 'TXM', defaut = 'RELATIF', into = {'RELATIF', 'ABSOLU'}, fr = "Kind of tolerance on INST." },
-      SIMP{ 'PRECISION', typ = 'R', defaut = 1.0e-6, val_min = 0.0, fr = "Tolerance when looking up INST." },
+      C_INST_TOLERANCE(),
     },
     SIMP{ 'TOUT_CMP', typ = 'TXM', into = {'OUI'}, fr = "Every component." },
     SIMP{ 'NOM_CMP', typ = 'TXM', max = '**', fr = "These components." },

@@ -11,16 +11,11 @@
 #include "contact/projection.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
+#include "core/number_format.hpp"
 #include "fem/quadrature.hpp"
 
 namespace aster::analysis {
 namespace {
-
-std::string sci(double v, int digits = 2) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*E", digits, v);
-  return buf;
-}
 
 // The components of CONT_NOEU (contact_terms.hpp).
 const std::vector<std::string> kContNoeu = {"CONT", "JEU", "RN", "RNX", "RNY"};
@@ -112,10 +107,7 @@ class ContactBase : public AdditionalTerms {
     return contact::Segment::seg2(position(n[0], U), position(n[1], U));
   }
   void appendDofs(int cell, std::vector<int>& dofs) const {
-    for (int n : mesh_.cellNodes(cell)) {
-      dofs.push_back(system_.dof(n, 0));
-      dofs.push_back(system_.dof(n, 1));
-    }
+    system_.dofMap().appendNodeDofs(mesh_.cellNodes(cell).begin(), mesh_.cellNodes(cell).end(), 2, dofs);
   }
   std::vector<contact::Segment> masters(const ContactZone& z, const Eigen::VectorXd& U) const {
     std::vector<contact::Segment> out;
@@ -250,7 +242,7 @@ class DiscreteContact final : public ContactBase {
 
   std::string statusText() const override {
     return std::to_string(std::count(active_.begin(), active_.end(), true)) + " active nodes, residual " +
-           sci(residual_);
+           format::scientific(residual_, 2);
   }
   void saveStatus() override { saved_ = active_; }
   void restoreStatus() override { active_ = saved_; }
@@ -289,7 +281,8 @@ class DiscreteContact final : public ContactBase {
   };
   std::vector<int> nodeDofs(std::size_t i) const {
     const auto& sn = nodes_[i];
-    std::vector<int> dofs = {system_.dof(sn.node, 0), system_.dof(sn.node, 1)};
+    std::vector<int> dofs;
+    system_.dofMap().appendNodeDofs(&sn.node, &sn.node + 1, 2, dofs);
     if (sn.segment >= 0) appendDofs(zones_[sn.zone].masterCells[sn.segment], dofs);
     dofs.push_back(first_ + static_cast<int>(i));
     return dofs;
@@ -479,7 +472,7 @@ class ContinueContact final : public ContactBase {
   bool updateStatus(const Eigen::VectorXd&) override { return false; }
   std::string statusText() const override {
     return std::to_string(pointsInContact_) + " points in contact, " + std::to_string(nodesInContact_) +
-           " nodes, residual " + sci(residual_);
+           " nodes, residual " + format::scientific(residual_, 2);
   }
   // CONTACT_INIT applies again when the first step is cut and restarted.
   void saveStatus() override { savedStarted_ = started_; }

@@ -93,10 +93,7 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
     const mechanics::ElementKernel* kernel = it->second;
     if (kernel->gaussPoints() > kMaxGaussPoints) throw Error("internal error: more Gauss points than kMaxGaussPoints");
     std::vector<int> d;
-    for (int n : mesh.cellNodes(c)) {
-      d.push_back(dofs_.dof(n, 0));
-      d.push_back(dofs_.dof(n, 1));
-    }
+    dofs_.appendNodeDofs(mesh.cellNodes(c).begin(), mesh.cellNodes(c).end(), 2, d);
     Cell cell{c, kernel, elements_.add(d), -1, 0};
     if (kernel->usesHistory()) {
       cell.state = statePoints;
@@ -135,10 +132,7 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
     for (const auto& p : applied.load->pressures)
       for (int c : p.cells) {
         std::vector<int> d;
-        for (int n : mesh.cellNodes(c)) {
-          d.push_back(dofs_.dof(n, 0));
-          d.push_back(dofs_.dof(n, 1));
-        }
+        dofs_.appendNodeDofs(mesh.cellNodes(c).begin(), mesh.cellNodes(c).end(), 2, d);
         pressureEdges_.push_back({c, elements_.add(d), &p.p, &applied});
       }
   }

@@ -91,7 +91,7 @@ model::MechanicalLoad readMechanical(const model::Model& m, const Keywords& k) {
         throw Error(occ.path + ": PRES_REP applies to segments in 2D; cell " + mesh.cellName(c) + " is a " +
                     mesh::cellTypeName(mesh.cellType(c)));
     m.checkCellsOnModel(cells, occ.path);
-    if (k.text("VERI_NORM", "OUI") == "OUI") checkOutwardNormals(mesh, occ, cells);
+    if (k.text("VERI_NORM") == "OUI") checkOutwardNormals(mesh, occ, cells);
     load.pressures.push_back({cells, valueOf(occ, "PRES")});
   }
   for (const auto& occ : k.factor("FORCE_NODALE"))

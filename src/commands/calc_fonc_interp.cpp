@@ -6,8 +6,6 @@
 
 namespace aster::lang {
 
-expr::TabulatedOptions tabulatedOptionsOf(const Keywords& k);
-
 namespace {
 
 ConceptPtr calcFoncInterp(const Keywords& k, Session&, ConceptPtr) {

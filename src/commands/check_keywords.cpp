@@ -8,14 +8,17 @@ post::CheckSpec checkSpecOf(const Keywords& k) {
   post::CheckSpec s;
   s.hasValeCalc = k.has("VALE_CALC");
   if (s.hasValeCalc) s.valeCalc = k.real("VALE_CALC");
-  s.toleMachine = k.real("TOLE_MACHINE", s.toleMachine);
-  s.reference = k.text("REFERENCE", "NON_REGRESSION");
+  s.toleMachine = k.real("TOLE_MACHINE");
+  s.reference = k.text("REFERENCE");
   s.hasValeRefe = k.has("VALE_REFE");
-  if (s.hasValeRefe) s.valeRefe = k.real("VALE_REFE");
-  s.precision = k.real("PRECISION", s.precision);
-  s.relative = k.text("CRITERE", "RELATIF") == "RELATIF";
-  s.ordreGrandeur = k.real("ORDRE_GRANDEUR", 0.0);
-  s.legende = k.text("LEGENDE", "XXXX");
+  // VALE_REFE and PRECISION come together (the catalogue's block on REFERENCE).
+  if (s.hasValeRefe) {
+    s.valeRefe = k.real("VALE_REFE");
+    s.precision = k.real("PRECISION");
+  }
+  s.relative = k.text("CRITERE") == "RELATIF";
+  s.ordreGrandeur = k.has("ORDRE_GRANDEUR") ? k.real("ORDRE_GRANDEUR") : 0.0;  // 0: no magnitude given
+  s.legende = k.text("LEGENDE");
   if (s.reference != "NON_REGRESSION" && !s.hasValeRefe)
     throw Error((k.path.empty() ? "" : k.path + ": ") + "REFERENCE='" + s.reference + "' needs VALE_REFE");
   if (!s.hasValeCalc && !s.hasValeRefe)

@@ -17,6 +17,7 @@
 #include "commands/selection.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
+#include "core/number_format.hpp"
 #include "lang/operators.hpp"
 
 namespace aster::lang {
@@ -47,14 +48,11 @@ std::vector<int> normalisedSupport(const std::set<int>& nodes, int nodeCount) {
 
 void printField(const NodalFieldConcept& f) {
   std::string s = "field " + f.field.name + " (" + std::to_string(supportOf(f).size()) + " nodes):\n";
-  char buf[64];
   for (int n : supportOf(f)) {
     s += "  " + f.mesh->nodeName(n);
-    for (std::size_t c = 0; c < f.field.components.size(); ++c) {
-      std::snprintf(buf, sizeof buf, "  %s=%.6g", f.field.components[c].c_str(),
-                    f.field.values[static_cast<std::size_t>(n) * f.field.components.size() + c]);
-      s += buf;
-    }
+    for (std::size_t c = 0; c < f.field.components.size(); ++c)
+      s += "  " + f.field.components[c] + "=" +
+           format::significant(f.field.values[static_cast<std::size_t>(n) * f.field.components.size() + c], 6);
     s += "\n";
   }
   Messages::info(s);
@@ -120,7 +118,7 @@ ConceptPtr extr(const Keywords& k, const FieldType& type, const std::string& typ
   }
   const auto result = k.concept<ResultConcept>("RESULTAT");
   const std::string name = k.text("NOM_CHAM");
-  if (k.text("INTERPOL", "NON") != "NON")
+  if (k.text("INTERPOL") != "NON")
     throw Error("INTERPOL='" + k.text("INTERPOL") + "' is not available yet: give a stored INST or NUME_ORDRE");
   const ResultInstant& inst = instantOf(*result, k);
   for (const auto& g : inst.gauss)

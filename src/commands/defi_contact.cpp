@@ -12,6 +12,7 @@
 #include "commands/contact_concept.hpp"
 #include "commands/model_concepts.hpp"
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "lang/operators.hpp"
 #include "analysis/contact_terms.hpp"
 
@@ -22,9 +23,7 @@ namespace {
 double positive(const Keywords& z, const std::string& key) {
   const double v = z.real(key);
   if (!(v > 0) || !std::isfinite(v)) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.6g", v);
-    throw Error(z.path + "/" + key + " = " + text + ": the coefficient must be > 0");
+    throw Error(z.path + "/" + key + " = " + format::significant(v, 6) + ": the coefficient must be > 0");
   }
   return v;
 }
@@ -42,13 +41,12 @@ auto ofGroups(const Keywords& z, const std::string& key, F&& lookup) {
 ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   auto model = static_cast<ModelConcept&>(*k.conceptPtr("MODELE")).model;
   const auto& mesh = model->mesh();
-  if (k.text("FROTTEMENT", "SANS") != "SANS")
+  if (k.text("FROTTEMENT") != "SANS")
     throw Error("FROTTEMENT='" + k.text("FROTTEMENT") + "': aster-lite's contact is frictionless (FROTTEMENT='SANS')");
   analysis::ContactSettings settings;
-  const std::string formulation = k.text("FORMULATION", "DISCRETE");
-  settings.continueFormulation = formulation == "CONTINUE";
+  settings.continueFormulation = k.text("FORMULATION") == "CONTINUE";
   settings.info = static_cast<int>(k.integer("INFO"));
-  const bool checkNormals = k.text("VERI_NORM", "OUI") == "OUI";
+  const bool checkNormals = k.text("VERI_NORM") == "OUI";
   std::vector<analysis::ContactZone> zones;
   for (const auto& z : k.factor("ZONE")) {
     analysis::ContactZone zone;
@@ -86,10 +84,10 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
     } else {
       if (algo == "PENALISATION") zs.penalty = positive(z, "COEF_PENA_CONT");
       else zs.rho = positive(z, "COEF_CONT");
-      zs.multipliers = z.text("INTERPOL_LAGS_C", "QUADRATIQUE") == "QUADRATIQUE"
+      zs.multipliers = z.text("INTERPOL_LAGS_C") == "QUADRATIQUE"
                            ? contact::MultiplierInterpolation::Quadratic
                            : contact::MultiplierInterpolation::Linear;
-      const std::string integration = z.text("INTEGRATION", "GAUSS");
+      const std::string integration = z.text("INTEGRATION");
       if (integration == "GAUSS") {
         zs.integration = contact::ContactIntegration::Gauss;
         zs.gaussPoints = static_cast<int>(z.integer("ORDRE_INT"));
@@ -101,7 +99,7 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
       } else {
         zs.integration = contact::ContactIntegration::Nodes;  // 'AUTO', the validator allows nothing else
       }
-      const std::string init = z.text("CONTACT_INIT", "INTERPENETRE");
+      const std::string init = z.text("CONTACT_INIT");
       zs.initialStatus = init == "OUI"   ? contact::ForcedStatus::Contact
                          : init == "NON" ? contact::ForcedStatus::Separated
                                          : contact::ForcedStatus::None;
@@ -109,10 +107,8 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
     zones.push_back(std::move(zone));
   }
   auto c = std::make_shared<ContactConcept>();
-  c->formulation = formulation;
-  c->makeTerms = [zones, settings](const analysis::MechanicalSystem& system) {
-    return analysis::makeContactTerms(system, zones, settings);
-  };
+  c->zones = std::move(zones);
+  c->settings = settings;
   return c;
 }
 

@@ -54,9 +54,10 @@ ConceptPtr defiFichier(const Keywords& k, Session& session, ConceptPtr) {
     return nullptr;
   }
   const int unit = static_cast<int>(k.integer("UNITE"));
-  session.units[unit] = session.studyRelative(k.text("FICHIER", "fort." + std::to_string(unit)));
+  const std::string file = k.has("FICHIER") ? k.text("FICHIER") : "fort." + std::to_string(unit);
+  session.units[unit] = session.studyRelative(file);
   session.unitsBoundByStudy.insert(unit);
-  if (k.text("ACCES", "NEW") == "OLD")  // declared for reading: never written over
+  if (k.text("ACCES") == "OLD")  // declared for reading: never written over
     session.files.addInput(session.units[unit], "bound for reading by DEFI_FICHIER at " + session.where);
   return nullptr;
 }

@@ -6,16 +6,13 @@
 
 namespace aster::lang {
 
-// INTERPOL, PROL_GAUCHE, PROL_DROITE as DEFI_FONCTION and CALC_FONC_INTERP read them.
 expr::TabulatedOptions tabulatedOptionsOf(const Keywords& k) {
   expr::TabulatedOptions o;
-  const auto interpol = k.texts("INTERPOL");
-  if (!interpol.empty()) {
-    o.abscissa = expr::interpolationFromName(interpol.front());
-    o.ordinate = expr::interpolationFromName(interpol.back());
-  }
-  if (k.has("PROL_GAUCHE")) o.left = expr::extensionFromName(k.text("PROL_GAUCHE"));
-  if (k.has("PROL_DROITE")) o.right = expr::extensionFromName(k.text("PROL_DROITE"));
+  const auto interpol = k.texts("INTERPOL");  // one value for both axes, or two
+  o.abscissa = expr::interpolationFromName(interpol.front());
+  o.ordinate = expr::interpolationFromName(interpol.back());
+  o.left = expr::extensionFromName(k.text("PROL_GAUCHE"));
+  o.right = expr::extensionFromName(k.text("PROL_DROITE"));
   return o;
 }
 

@@ -51,7 +51,7 @@ void createCellGroup(mesh::Mesh& m, const Keywords& occ, const std::string& wher
     throw Error(where + ": NOM='" + name + "': the group of cells already exists in the mesh "
                 "(delete it first with DETR_GROUP_MA={NOM='" + name + "'})");
   std::vector<int> cells = cellsOf(m, occ);
-  const std::string dim = occ.text("TYPE_MAILLE", "TOUT");
+  const std::string dim = occ.text("TYPE_MAILLE");
   if (dim != "TOUT") {
     const int d = dim == "1D" ? 1 : 2;
     cells.erase(std::remove_if(cells.begin(), cells.end(),
@@ -166,15 +166,14 @@ std::vector<int> orderedNodes(const mesh::Mesh& m, const Keywords& occ, const st
 }
 
 void createNodeGroups(mesh::Mesh& m, const Keywords& occ, const std::string& where, int info) {
-  if (occ.text("OPTION", "") == "NOEUD_ORDO") {
+  if (occ.has("OPTION") && occ.text("OPTION") == "NOEUD_ORDO") {
     addNodeGroupChecked(m, occ.text("NOM"), orderedNodes(m, occ, where), where, info);
     return;
   }
   const std::vector<std::string> names = occ.texts("NOM");
-  const std::string crit = occ.text("CRIT_NOEUD", "TOUS");
   // One group of nodes per group of cells; names derived from the cell groups
   // are skipped with an alarm when taken (gmsh meshes come with them already).
-  auto perCellGroup = [&](const std::vector<std::string>& groups, bool derivedNames) {
+  auto perCellGroup = [&](const std::vector<std::string>& groups, bool derivedNames, const std::string& crit) {
     if (!derivedNames && names.size() != groups.size())
       throw Error(where + ": NOM gives " + std::to_string(names.size()) + " names for " +
                   std::to_string(groups.size()) + " groups of GROUP_MA; give one name per group");
@@ -189,11 +188,11 @@ void createNodeGroups(mesh::Mesh& m, const Keywords& occ, const std::string& whe
     }
   };
   if (occ.has("TOUT_GROUP_MA")) {
-    perCellGroup(m.cellGroupNames(), true);
+    perCellGroup(m.cellGroupNames(), true, "TOUS");  // CRIT_NOEUD belongs to GROUP_MA: every node
     return;
   }
   if (occ.has("GROUP_MA")) {
-    perCellGroup(occ.texts("GROUP_MA"), names.empty());
+    perCellGroup(occ.texts("GROUP_MA"), names.empty(), occ.text("CRIT_NOEUD"));
     return;
   }
   if (names.size() != 1)

@@ -22,6 +22,7 @@
 #include "commands/selection.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
+#include "core/number_format.hpp"
 #include "lang/session.hpp"
 #include "post/norms.hpp"
 
@@ -184,7 +185,7 @@ ConceptPtr affe(const Keywords& k, const std::string& typeCham, const std::strin
       }
     }
   }
-  return b.build(typeCham, k.text("PROL_ZERO", "NON") == "OUI", functions, "AFFE: the field is empty");
+  return b.build(typeCham, k.text("PROL_ZERO") == "OUI", functions, "AFFE: the field is empty");
 }
 
 // ------------------------------------------------------------------ DISC
@@ -209,7 +210,7 @@ ConceptPtr disc(const Keywords& k, const std::string& typeCham, const std::strin
                   "' keeps the components of the nodal field (rename them first with OPERATION='ASSE', NOM_CMP_RESU)");
     }
   }
-  const bool prolZero = k.text("PROL_ZERO", "NON") == "OUI";
+  const bool prolZero = k.text("PROL_ZERO") == "OUI";
   Builder b(model, quantity);
   const auto& mesh = model->mesh();
   const std::size_t nc = src->field.components.size();
@@ -385,7 +386,7 @@ ConceptPtr asse(const Keywords& k, const std::string& typeCham, const std::strin
     }
   }
   if (!any) throw Error("ASSE: no cell of the designated parts carries the source fields");
-  return b.build(typeCham, k.text("PROL_ZERO", "NON") == "OUI", false, "ASSE: the field is empty");
+  return b.build(typeCham, k.text("PROL_ZERO") == "OUI", false, "ASSE: the field is empty");
 }
 
 // ------------------------------------------------------------------ EXTR
@@ -396,7 +397,7 @@ ConceptPtr extr(const Keywords& k, const std::string& typeCham, const std::strin
                 "are CREA_CHAMP{OPERATION='DISC', TYPE_CHAM='ELGA_GEOM_R', MODELE=..., CHAM_GD=<that NOEU_GEOM_R field>}");
   const auto result = k.concept<ResultConcept>("RESULTAT");
   const std::string name = k.text("NOM_CHAM");
-  if (k.text("INTERPOL", "NON") != "NON")
+  if (k.text("INTERPOL") != "NON")
     throw Error("INTERPOL='" + k.text("INTERPOL") + "' is not available yet: give a stored INST or NUME_ORDRE");
   const ResultInstant& inst = instantOf(*result, k);
   const GaussField* g = ResultConcept::gaussField(inst, name);
@@ -420,15 +421,12 @@ ConceptPtr extr(const Keywords& k, const std::string& typeCham, const std::strin
 void printField(const ElgaFieldConcept& f, const std::string& name) {
   const std::size_t nc = f.field.components.size();
   std::string s = "field " + name + " at Gauss points (" + std::to_string(f.field.cells.size()) + " cells):\n";
-  char buf[64];
   for (std::size_t k = 0; k < f.field.cells.size(); ++k)
     for (int q = 0; q < gaussPointsOf(f.field, k); ++q) {
       s += "  " + f.mesh->cellName(f.field.cells[k]) + " point " + std::to_string(q + 1);
       for (std::size_t c = 0; c < nc; ++c) {
         if (!f.present[k * nc + c]) continue;
-        std::snprintf(buf, sizeof buf, "  %s=%.6g", f.field.components[c].c_str(),
-                      f.field.values[f.field.offsets[k] + q * nc + c]);
-        s += buf;
+        s += "  " + f.field.components[c] + "=" + format::significant(f.field.values[f.field.offsets[k] + q * nc + c], 6);
       }
       s += "\n";
     }

@@ -71,8 +71,8 @@ inline AsseTerm asseTermOf(const Keywords& occ, const std::vector<std::string>& 
   if (t.names.size() != t.resultNames.size())
     throw Error(occ.path + ": NOM_CMP has " + std::to_string(t.names.size()) + " component(s), NOM_CMP_RESU " +
                 std::to_string(t.resultNames.size()));
-  t.cumul = occ.text("CUMUL", "NON") == "OUI";
-  t.coef = occ.real("COEF_R", 1.0);
+  t.cumul = occ.text("CUMUL") == "OUI";
+  t.coef = occ.real("COEF_R");
   return t;
 }
 
@@ -103,8 +103,8 @@ inline const ResultInstant& instantOf(const ResultConcept& r, const Keywords& oc
   }
   if (!occ.has("INST")) return r.last();
   const double t = occ.real("INST");
-  const double precision = occ.real("PRECISION", 1e-6);
-  if (occ.text("CRITERE", "RELATIF") == "ABSOLU") {
+  const double precision = occ.real("PRECISION");
+  if (occ.text("CRITERE") == "ABSOLU") {
     for (const auto& i : r.instants)
       if (std::abs(i.time - t) <= precision) return i;
   }

@@ -6,6 +6,8 @@
 
 #include "core/concept.hpp"
 #include "expr/function.hpp"
+#include "expr/tabulated.hpp"
+#include "lang/keywords.hpp"
 
 namespace aster::lang {
 
@@ -28,5 +30,9 @@ class RealListConcept : public Concept {
 
 // The function behind a keyword that takes a formule or a fonction_sdaster.
 expr::FunctionPtr functionOf(const ConceptPtr& c);
+
+// The keywords of C_INTERPOL_PROL (INTERPOL, PROL_GAUCHE, PROL_DROITE) as the
+// options of a tabulated function.
+expr::TabulatedOptions tabulatedOptionsOf(const Keywords& k);
 
 }  // namespace aster::lang

@@ -21,6 +21,7 @@
 #include "commands/function_concepts.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
+#include "core/number_format.hpp"
 #include "expr/tabulated.hpp"
 #include "lang/operators.hpp"
 
@@ -52,14 +53,14 @@ Curve curveOf(const Keywords& occ, Session& session) {
     } else {
       throw Error(occ.path + ": " + session.nameOf(*fc) + " is a formula: give LIST_PARA, the abscissas to evaluate it at");
     }
-    c.legend = occ.text("LEGENDE", session.nameOf(*fc));
+    c.legend = occ.has("LEGENDE") ? occ.text("LEGENDE") : session.nameOf(*fc);
   } else {
     c.x = occ.reals("ABSCISSE");
     c.y = occ.reals("ORDONNEE");
     if (c.x.size() != c.y.size())
       throw Error(occ.path + ": ABSCISSE has " + std::to_string(c.x.size()) + " values, ORDONNEE " +
                   std::to_string(c.y.size()));
-    c.legend = occ.text("LEGENDE", "");
+    if (occ.has("LEGENDE")) c.legend = occ.text("LEGENDE");
   }
   if (occ.has("STYLE")) c.style = static_cast<int>(occ.integer("STYLE"));
   if (occ.has("COULEUR")) c.colour = static_cast<int>(occ.integer("COULEUR"));
@@ -82,11 +83,7 @@ double logSlope(const Curve& c) {
   return (n * sxy - sx * sy) / d;
 }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+std::string number(double v) { return format::significant(v, 10); }
 
 // A gnuplot string expression whose value is `s`, character for character.
 // Texts and paths come from the study: in a double-quoted gnuplot string, `...`
@@ -182,7 +179,7 @@ std::vector<std::string> drawPlots(const std::vector<Session::PlotScript>& plots
 ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   std::vector<Curve> curves;
   for (const auto& occ : k.factor("COURBE")) curves.push_back(curveOf(occ, session));
-  const bool pente = k.text("PENTE", "NON") == "OUI";
+  const bool pente = k.text("PENTE") == "OUI";
   for (auto& c : curves) {
     if (!pente) continue;
     const double s = logSlope(c);
@@ -191,7 +188,7 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
     c.legend = c.legend.empty() ? std::string(buf) : c.legend + " (" + buf + ")";
     Messages::info("IMPR_FONCTION: " + c.legend);
   }
-  const std::string format = k.text("FORMAT", "TABLEAU");
+  const std::string format = k.text("FORMAT");
   const int unit = static_cast<int>(k.integer("UNITE"));
   const auto bound = session.units.find(unit);
   if (format == "TABLEAU") {
@@ -199,7 +196,8 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
     if (k.has("TITRE")) out << "# " << k.text("TITRE") << "\n";
     for (std::size_t i = 0; i < curves.size(); ++i) {
       out << "# COURBE " << i + 1 << (curves[i].legend.empty() ? "" : ": " + curves[i].legend) << "\n";
-      out << "# " << k.text("LEGENDE_X", "X") << "  " << k.text("LEGENDE_Y", "Y") << "\n";
+      out << "# " << (k.has("LEGENDE_X") ? k.text("LEGENDE_X") : "X") << "  "
+          << (k.has("LEGENDE_Y") ? k.text("LEGENDE_Y") : "Y") << "\n";
       for (std::size_t j = 0; j < curves[i].x.size(); ++j)
         out << number(curves[i].x[j]) << "  " << number(curves[i].y[j]) << "\n";
       out << "\n";
@@ -233,13 +231,13 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   gp << "set terminal " << (format == "PNG" ? "pngcairo" : "svg") << " size 900,650 noenhanced font 'Sans,11'\n";
   // Paths absolute: gnuplot takes a file name starting with '|' or '<' for a command.
   gp << "set output " << gnuplotString(std::filesystem::absolute(image).string()) << "\n";
-  std::string title = k.text("TITRE", "");
+  std::string title = k.has("TITRE") ? k.text("TITRE") : "";
   if (k.has("SOUS_TITRE")) title += (title.empty() ? "" : "\n") + k.text("SOUS_TITRE");
   if (!title.empty()) gp << "set title " << gnuplotString(title) << "\n";
   if (k.has("LEGENDE_X")) gp << "set xlabel " << gnuplotString(k.text("LEGENDE_X")) << "\n";
   if (k.has("LEGENDE_Y")) gp << "set ylabel " << gnuplotString(k.text("LEGENDE_Y")) << "\n";
-  if (k.text("ECHELLE_X", "LIN") == "LOG") gp << "set logscale x\n";
-  if (k.text("ECHELLE_Y", "LIN") == "LOG") gp << "set logscale y\n";
+  if (k.text("ECHELLE_X") == "LOG") gp << "set logscale x\n";
+  if (k.text("ECHELLE_Y") == "LOG") gp << "set logscale y\n";
   if (k.has("BORNE_X")) gp << "set xrange [" << number(k.reals("BORNE_X")[0]) << ":" << number(k.reals("BORNE_X")[1]) << "]\n";
   if (k.has("BORNE_Y")) gp << "set yrange [" << number(k.reals("BORNE_Y")[0]) << ":" << number(k.reals("BORNE_Y")[1]) << "]\n";
   if (k.has("GRILLE_X")) gp << "set xtics " << number(k.real("GRILLE_X")) << "\n";

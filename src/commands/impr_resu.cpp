@@ -28,6 +28,7 @@
 #include "core/atomic_write.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
+#include "core/number_format.hpp"
 #include "lang/operators.hpp"
 #include "mesh/io/aster_format.hpp"
 #include "mesh/io/gmsh_format.hpp"
@@ -105,8 +106,8 @@ std::vector<const ResultInstant*> selectInstants(const ResultConcept& r, const K
     if (out.empty()) throw Error("RESULTAT: the result holds no instant");
     return out;
   }
-  const double precision = occ.real("PRECISION", 1e-6);
-  const bool absolute = occ.text("CRITERE", "RELATIF") == "ABSOLU";
+  const double precision = occ.real("PRECISION");
+  const bool absolute = occ.text("CRITERE") == "ABSOLU";
   for (double t : times) {
     const ResultInstant* found = nullptr;
     if (absolute) {
@@ -187,11 +188,7 @@ Item resolve(const Keywords& occ, bool textFormat) {
 
 // ------------------------------------------------------------ RESULTAT (text)
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "% .8E", v);
-  return buf;
-}
+std::string number(double v) { return format::scientificAligned(v, 8); }
 
 void printNodalField(std::ostream& out, const mesh::Mesh& m, const mesh::NodalField& f, std::vector<int> nodes,
                      bool vmax, bool vmin) {

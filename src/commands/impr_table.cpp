@@ -18,7 +18,7 @@ ConceptPtr imprTable(const Keywords& k, Session& session, ConceptPtr) {
   std::vector<int> rows = table.select(tableFiltersOf(k));
   if (!k.factor("TRI").empty()) {
     const auto& tri = k.factor("TRI")[0];
-    const auto order = table.sortedRows(tri.texts("NOM_PARA"), tri.text("ORDRE", "CROISSANT") == "DECROISSANT");
+    const auto order = table.sortedRows(tri.texts("NOM_PARA"), tri.text("ORDRE") == "DECROISSANT");
     std::vector<char> keep(table.rowCount(), 0);
     for (int r : rows) keep[r] = 1;
     rows.clear();
@@ -27,10 +27,10 @@ ConceptPtr imprTable(const Keywords& k, Session& session, ConceptPtr) {
   }
   post::Table out = table.subset(rows, k.has("NOM_PARA") ? k.texts("NOM_PARA") : std::vector<std::string>{});
   if (k.has("TITRE")) out.titles = k.texts("TITRE");
-  const bool csv = k.text("FORMAT", "TABLEAU") == "CSV";
-  const std::string formatR = k.text("FORMAT_R", "E12.5");
-  const std::string text = csv ? out.formatCsv(formatR, k.text("SEPARATEUR", ","))
-                               : out.formatTableau(formatR, k.text("SEPARATEUR", " "));
+  const bool csv = k.text("FORMAT") == "CSV";
+  const std::string formatR = k.text("FORMAT_R");
+  const std::string text = csv ? out.formatCsv(formatR, (k.has("SEPARATEUR") ? k.text("SEPARATEUR") : ","))
+                               : out.formatTableau(formatR, (k.has("SEPARATEUR") ? k.text("SEPARATEUR") : " "));
   const int unit = static_cast<int>(k.integer("UNITE"));
   std::filesystem::path path;
   auto bound = session.units.find(unit);

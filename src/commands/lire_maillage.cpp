@@ -47,7 +47,7 @@ ConceptPtr lireMaillage(const Keywords& k, Session& session, ConceptPtr) {
     *m = mesh::readGmshMesh(path.string(), options);
   } else {
 #ifdef ASTER_HAS_MED
-    *m = mesh::readMedMesh(path.string(), k.text("NOM_MED", ""));
+    *m = mesh::readMedMesh(path.string(), k.has("NOM_MED") ? k.text("NOM_MED") : "");
 #else
     throw Error("FORMAT='MED': this build of aster-lite has no MED library (install libmedc-dev and rebuild)");
 #endif

@@ -38,10 +38,10 @@ ConceptPtr postReleveT(const Keywords& k, Session& session, ConceptPtr reuse) {
       mesh = r->model->meshPtr();
       what = occ.text("NOM_CHAM");
       std::vector<const ResultInstant*> chosen;
-      Keywords one;
-      one.setSimple("CRITERE", {Value::ofText(occ.text("CRITERE", "RELATIF"))});
-      one.setSimple("PRECISION", {Value::ofReal(occ.real("PRECISION", 1e-6))});
       if (occ.has("INST")) {
+        Keywords one;
+        one.setSimple("CRITERE", {Value::ofText(occ.text("CRITERE"))});
+        one.setSimple("PRECISION", {Value::ofReal(occ.real("PRECISION"))});
         for (double t : occ.reals("INST")) {
           one.setSimple("INST", {Value::ofReal(t)});
           chosen.push_back(&instantOf(*r, one));

@@ -29,7 +29,7 @@ ConceptPtr recuFonction(const Keywords& k, Session&, ConceptPtr) {
     y.push_back(vy.number());
   }
   if (x.empty()) throw Error("no row of the table (after FILTRE) gives both " + px + " and " + py);
-  if (k.text("VERIF", "CROISSANT") == "NON") {
+  if (k.text("VERIF") == "NON") {
     std::vector<std::size_t> order(x.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
@@ -37,13 +37,7 @@ ConceptPtr recuFonction(const Keywords& k, Session&, ConceptPtr) {
     for (auto i : order) { xs.push_back(x[i]); ys.push_back(y[i]); }
     x = xs; y = ys;
   }
-  expr::TabulatedOptions opt;
-  const auto interp = k.texts("INTERPOL");
-  opt.abscissa = expr::interpolationFromName(interp.at(0));
-  opt.ordinate = expr::interpolationFromName(interp.size() > 1 ? interp[1] : interp[0]);
-  opt.left = expr::extensionFromName(k.text("PROL_GAUCHE", "EXCLU"));
-  opt.right = expr::extensionFromName(k.text("PROL_DROITE", "EXCLU"));
-  auto f = std::make_shared<expr::Tabulated>(k.text("NOM_PARA", px), x, y, opt);
+  auto f = std::make_shared<expr::Tabulated>(k.has("NOM_PARA") ? k.text("NOM_PARA") : px, x, y, tabulatedOptionsOf(k));
   if (k.integer("INFO") >= 2) {
     std::string s = "RECU_FONCTION " + px + " -> " + py + ":\n";
     for (std::size_t i = 0; i < x.size(); ++i) s += "  " + expr::numberText(x[i]) + "  " + expr::numberText(y[i]) + "\n";

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "post/check.hpp"
+#include "core/number_format.hpp"
 
 namespace aster::lang {
 
@@ -11,8 +11,8 @@ const ResultInstant& ResultConcept::at(double time, double precision) const {
   for (const auto& i : instants)
     if (std::fabs(i.time - time) <= precision * std::max(1.0, std::fabs(time))) return i;
   std::string list;
-  for (const auto& i : instants) list += (list.empty() ? "" : ", ") + post::formatNumber(i.time);
-  throw Error("INST=" + post::formatNumber(time) + " is not an instant of the result (instants: " +
+  for (const auto& i : instants) list += (list.empty() ? "" : ", ") + format::asterValue(i.time);
+  throw Error("INST=" + format::asterValue(time) + " is not an instant of the result (instants: " +
               (list.empty() ? std::string("none") : list) + ")");
 }
 
@@ -29,9 +29,9 @@ const mesh::NodalField& ResultConcept::nodalField(const ResultInstant& i, const 
   }
   if (gaussField(i, name))
     throw Error("NOM_CHAM='" + name + "' is a field at Gauss points, not at nodes (nodal fields at INST=" +
-                post::formatNumber(i.time) + ": " + list + ")");
+                format::asterValue(i.time) + ": " + list + ")");
   for (const auto& g : i.gauss) list += (list.empty() ? "" : ", ") + g.name;
-  throw Error("NOM_CHAM='" + name + "' is not stored in the result at INST=" + post::formatNumber(i.time) +
+  throw Error("NOM_CHAM='" + name + "' is not stored in the result at INST=" + format::asterValue(i.time) +
               " (fields: " + list + ")");
 }
 

@@ -38,7 +38,7 @@ std::vector<double> instantsOf(const Keywords& inc, int& subdPas, int& subdNivea
     all = static_cast<RealListConcept&>(*list).values;
   }
   if (all.size() < 2) throw Error("INCREMENT/LIST_INST must hold at least two instants");
-  const double eps = inc.real("PRECISION", 1e-6) * std::max(1.0, std::fabs(all.back() - all.front()));
+  const double eps = inc.real("PRECISION") * std::max(1.0, std::fabs(all.back() - all.front()));
   const long long last = static_cast<long long>(all.size()) - 1;
   auto byIndex = [&](const char* key) {
     const long long i = inc.integer(key);
@@ -51,7 +51,9 @@ std::vector<double> instantsOf(const Keywords& inc, int& subdPas, int& subdNivea
                     : inc.has("INST_INIT")    ? inc.real("INST_INIT")
                     : initialTime             ? *initialTime
                                               : all.front();
-  const double t1 = inc.has("NUME_INST_FIN") ? byIndex("NUME_INST_FIN") : inc.real("INST_FIN", all.back());
+  const double t1 = inc.has("NUME_INST_FIN") ? byIndex("NUME_INST_FIN")
+                    : inc.has("INST_FIN")    ? inc.real("INST_FIN")
+                                             : all.back();
   std::vector<double> out;
   for (double t : all)
     if (t >= t0 - eps && t <= t1 + eps) out.push_back(t);
@@ -90,7 +92,7 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
     if (load->model != model) throw Error(occ.path + ": CHARGE was defined on another MODELE");
     analysis::AppliedLoad applied;
     applied.load = &load->load;
-    applied.follower = occ.text("TYPE_CHARGE", "FIXE_CSTE") == "SUIV";
+    applied.follower = occ.text("TYPE_CHARGE") == "SUIV";
     if (applied.follower) {
       // Only a pressure can follow the deformation (as in code_aster).
       const auto& l = load->load;
@@ -122,14 +124,14 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
 analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   analysis::NewtonSettings settings;
   const auto& newton = k.factor("NEWTON").front();
-  const std::string matrice = newton.text("MATRICE", "TANGENTE");
+  const std::string matrice = newton.text("MATRICE");
   settings.elasticMatrix = matrice == "ELASTIQUE";
-  const std::string prediction = newton.text("PREDICTION", matrice);
+  const std::string prediction = newton.has("PREDICTION") ? newton.text("PREDICTION") : matrice;
   settings.prediction = prediction == "ELASTIQUE"   ? analysis::Prediction::Elastic
                         : prediction == "EXTRAPOLE" ? analysis::Prediction::Extrapolated
                                                     : analysis::Prediction::Tangent;
-  settings.reacIter = static_cast<int>(newton.has("REAC_ITER") ? newton.integer("REAC_ITER") : 1);
-  settings.reacIncr = static_cast<int>(newton.has("REAC_INCR") ? newton.integer("REAC_INCR") : 1);
+  settings.reacIter = static_cast<int>(newton.integer("REAC_ITER"));
+  settings.reacIncr = static_cast<int>(newton.integer("REAC_INCR"));
   const auto& conv = k.factor("CONVERGENCE").front();
   // RESI_GLOB_RELA (1e-6 by default, when RESI_GLOB_MAXI is absent) and/or RESI_GLOB_MAXI.
   settings.useRela = conv.has("RESI_GLOB_RELA");
@@ -137,11 +139,11 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   settings.useMaxi = conv.has("RESI_GLOB_MAXI");
   if (settings.useMaxi) settings.resiGlobMaxi = conv.real("RESI_GLOB_MAXI");
   settings.iterGlobMaxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
-  settings.arret = conv.text("ARRET", "OUI") == "OUI";
+  settings.arret = conv.text("ARRET") == "OUI";
   const auto& solveur = k.factor("SOLVEUR").front();
-  settings.method = solveur.text("METHODE", "MULT_FRONT");
-  settings.renum = solveur.text("RENUM", "AUTO");
-  settings.nprec = solveur.text("STOP_SINGULIER", "OUI") == "NON" ? 0 : static_cast<int>(solveur.integer("NPREC"));
+  settings.method = solveur.text("METHODE");
+  settings.renum = solveur.text("RENUM");
+  settings.nprec = solveur.text("STOP_SINGULIER") == "NON" ? 0 : static_cast<int>(solveur.integer("NPREC"));
   return settings;
 }
 
@@ -266,7 +268,8 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   // Build: the system, the contact terms, the driver and its convergence table.
   analysis::MechanicalSystem system(problem);
   std::unique_ptr<analysis::AdditionalTerms> terms;
-  if (k.has("CONTACT")) terms = static_cast<ContactConcept&>(*k.conceptPtr("CONTACT")).makeTerms(system);
+  if (const auto contact = k.concept<ContactConcept>("CONTACT"))
+    terms = analysis::makeContactTerms(system, contact->zones, contact->settings);
   analysis::StaticNonlinear newtonSolver(system, terms.get(), settings);
   analysis::ConvergenceTable table(terms != nullptr);
   if (k.integer("INFO") >= 1) newtonSolver.addObserver(table);

@@ -21,12 +21,14 @@ inline std::vector<post::TableFilter> tableFiltersOf(const Keywords& k) {
   for (const auto& occ : k.factor("FILTRE")) {
     post::TableFilter f;
     f.column = occ.text("NOM_PARA");
-    f.comparison = occ.text("CRIT_COMP", "EQ");
+    f.comparison = occ.text("CRIT_COMP");
     if (occ.has("VALE")) f.reals = occ.reals("VALE");
     if (occ.has("VALE_I")) f.reals = occ.reals("VALE_I");
     if (occ.has("VALE_K")) f.texts = occ.texts("VALE_K");
-    f.relative = occ.text("CRITERE", "RELATIF") == "RELATIF";
-    f.precision = occ.real("PRECISION", 1e-3);
+    if (occ.has("CRITERE")) {  // the tolerance of EQ and NE (the catalogue's block on CRIT_COMP)
+      f.relative = occ.text("CRITERE") == "RELATIF";
+      f.precision = occ.real("PRECISION");
+    }
     filters.push_back(f);
   }
   return filters;

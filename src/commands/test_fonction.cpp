@@ -19,7 +19,7 @@ ConceptPtr testFonction(const Keywords& k, Session& session, ConceptPtr) {
     std::string params, values;
     for (std::size_t i = 0; i < x.size(); ++i) {
       params += (i ? "," : "") + f->parameters()[i];
-      values += (i ? "," : "") + post::formatNumber(x[i]);
+      values += (i ? "," : "") + format::asterValue(x[i]);
     }
     recordCheck(session, f->evaluate(x.data()), checkSpecOf(occ),
                 {{"FONCTION", session.nameOf(*fc)}, {"NOM_PARA", params}, {"VALE_PARA", values}});

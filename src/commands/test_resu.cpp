@@ -152,7 +152,7 @@ double gaussValue(const Keywords& occ, const GaussFieldConcept& g, const std::st
 }
 
 void record(Session& session, const Keywords& occ, double value, const What& what) {
-  if (occ.text("VALE_ABS", "NON") == "OUI") value = std::abs(value);
+  if (occ.text("VALE_ABS") == "OUI") value = std::abs(value);
   recordCheck(session, value, checkSpecOf(occ), what);
 }
 
@@ -177,9 +177,13 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
   }
   for (const auto& occ : k.factor("RESU")) {
     const auto r = occ.concept<ResultConcept>("RESULTAT");
-    const ResultInstant& inst = instantOf(*r, occ);
+    // RESU's CRITERE and PRECISION are the check's: INST is looked up with them, and
+    // within 1e-6 (relative by default) when the check has no PRECISION (no VALE_REFE).
+    Keywords lookup = occ;
+    if (!lookup.has("PRECISION")) lookup.setSimple("PRECISION", {Value::ofReal(1e-6)});
+    const ResultInstant& inst = instantOf(*r, lookup);
     What what{{"RESULTAT", session.nameOf(*r)}};
-    if (occ.has("INST")) what.push_back({"INST", post::formatNumber(inst.time)});
+    if (occ.has("INST")) what.push_back({"INST", format::asterValue(inst.time)});
     else what.push_back({"NUME_ORDRE", std::to_string(inst.index)});
     if (occ.has("PARA")) {
       const std::string p = occ.text("PARA");

@@ -21,10 +21,10 @@ ConceptPtr testTable(const Keywords& k, Session& session, ConceptPtr) {
   std::vector<std::pair<std::string, std::string>> what{{"TABLE", session.nameOf(*tc)}, {"NOM_PARA", para}};
   for (const auto& f : k.factor("FILTRE")) {
     std::string v;
-    if (f.has("VALE")) for (double x : f.reals("VALE")) v += (v.empty() ? "" : ",") + post::formatNumber(x);
-    if (f.has("VALE_I")) for (double x : f.reals("VALE_I")) v += (v.empty() ? "" : ",") + post::formatNumber(x);
+    if (f.has("VALE")) for (double x : f.reals("VALE")) v += (v.empty() ? "" : ",") + format::asterValue(x);
+    if (f.has("VALE_I")) for (double x : f.reals("VALE_I")) v += (v.empty() ? "" : ",") + format::asterValue(x);
     if (f.has("VALE_K")) for (const auto& x : f.texts("VALE_K")) v += (v.empty() ? "" : ",") + x;
-    what.push_back({"FILTRE " + f.text("NOM_PARA"), f.text("CRIT_COMP", "EQ") + (v.empty() ? "" : " " + v)});
+    what.push_back({"FILTRE " + f.text("NOM_PARA"), f.text("CRIT_COMP") + (v.empty() ? "" : " " + v)});
   }
   if (k.has("VALE_CALC_K")) {
     if (k.has("TYPE_TEST")) throw Error("TYPE_TEST needs a numeric column, not VALE_CALC_K");
@@ -35,7 +35,7 @@ ConceptPtr testTable(const Keywords& k, Session& session, ConceptPtr) {
     const std::string expected = k.text("VALE_CALC_K");
     const bool ok = got == expected;
     std::string block = " ---- TABLE " + session.nameOf(*tc) + "  NOM_PARA " + para + "\n" + (ok ? " OK   " : " NOOK ") +
-                        "NON_REGRESSION   " + k.text("LEGENDE", "XXXX") + "   '" + expected + "'   '" + got + "'\n\n";
+                        "NON_REGRESSION   " + k.text("LEGENDE") + "   '" + expected + "'   '" + got + "'\n\n";
     session.recordCheck(block, ok);
     return nullptr;
   }
@@ -62,7 +62,7 @@ ConceptPtr testTable(const Keywords& k, Session& session, ConceptPtr) {
     if (v.empty()) throw Error("the cell of column " + para + " is empty in the selected row");
     value = v.number();
   }
-  if (k.text("VALE_ABS", "NON") == "OUI") value = std::abs(value);
+  if (k.text("VALE_ABS") == "OUI") value = std::abs(value);
   Keywords spec = k;
   if (k.has("VALE_CALC_I")) spec.setSimple("VALE_CALC", {Value::ofReal(double(k.integer("VALE_CALC_I")))});
   if (k.has("VALE_REFE_I")) spec.setSimple("VALE_REFE", {Value::ofReal(double(k.integer("VALE_REFE_I")))});

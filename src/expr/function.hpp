@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/number_format.hpp"
+
 namespace aster::expr {
 
 class Function {
@@ -25,7 +27,7 @@ class Function {
 using FunctionPtr = std::shared_ptr<const Function>;
 
 // Shortest text that reads back to the same double ("2.5", "0", "1e-05"), for messages.
-std::string numberText(double value);
+inline std::string numberText(double value) { return format::shortest(value); }
 
 // "X, Y" (or "none"), for messages that list names.
 std::string joinNames(const std::vector<std::string>& names);

@@ -42,4 +42,9 @@ int DofMap::at(int node, int component) const {
   return first_[node] + component;
 }
 
+void DofMap::appendNodeDofs(const int* first, const int* last, int components, std::vector<int>& out) const {
+  for (const int* node = first; node != last; ++node)
+    for (int k = 0; k < components; ++k) out.push_back(count(*node) ? dof(*node, k) : -1);
+}
+
 }  // namespace aster::fem

@@ -26,6 +26,12 @@ class DofMap {
   // Checked: throws aster::Error when the node or the component does not exist.
   int at(int node, int component) const;
 
+  // The DOF list of a cell (or of any nodes [first, last)): components
+  // 0..components-1 of each node, node-major, the order the element kernels use
+  // (DX, DY of node 0, then of node 1...), appended to `out`. A node that
+  // carries no DOF gives -1, "not assembled", for each component.
+  void appendNodeDofs(const int* first, const int* last, int components, std::vector<int>& out) const;
+
  private:
   std::vector<int> first_{0};  // size nodeCount + 1, prefix sums of counts
 };

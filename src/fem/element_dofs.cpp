@@ -27,8 +27,8 @@ int ElementDofs::addCells(const std::vector<std::vector<int>>& cells, const DofM
       if (map.count(node) < components)
         throw Error("ElementDofs: node " + std::to_string(node) + " has " + std::to_string(map.count(node)) +
                     " DOFs, cell " + std::to_string(c) + " needs " + std::to_string(components));
-      for (int k = 0; k < components; ++k) local.push_back(map.dof(node, k));
     }
+    map.appendNodeDofs(cells[c].data(), cells[c].data() + cells[c].size(), components, local);
     add(local);
   }
   return firstElement;

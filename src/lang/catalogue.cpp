@@ -14,10 +14,24 @@ namespace aster::lang {
 namespace {
 
 // The catalogue's vocabulary (code_aster's): each constructor tags its table.
+// KEYWORDS{...} is a list of keywords (a common group, commands/commons/) that
+// the constructors splice in where it is placed.
 const char* kPrelude = R"(
-local function tagged(kind) return function(t) t.__kind = kind; return t end end
+local function spliced(t)
+  local out = {}
+  for k, v in pairs(t) do if math.type(k) ~= 'integer' then out[k] = v end end
+  for _, v in ipairs(t) do
+    if type(v) == 'table' and v.__kind == 'KEYWORDS' then
+      for _, w in ipairs(v) do out[#out + 1] = w end
+    else
+      out[#out + 1] = v
+    end
+  end
+  return out
+end
+local function tagged(kind) return function(t) t = spliced(t); t.__kind = kind; return t end end
 OPER, PROC, MACRO = tagged('OPER'), tagged('PROC'), tagged('MACRO')
-SIMP, FACT, BLOC = tagged('SIMP'), tagged('FACT'), tagged('BLOC')
+SIMP, FACT, BLOC, KEYWORDS = tagged('SIMP'), tagged('FACT'), tagged('BLOC'), tagged('KEYWORDS')
 local function rule(kind) return function(...) return {__kind = 'RULE', rule = kind, ...} end end
 UN_PARMI, EXCLUS, AU_MOINS_UN = rule('UN_PARMI'), rule('EXCLUS'), rule('AU_MOINS_UN')
 AU_PLUS_UN, PRESENT_PRESENT = rule('AU_PLUS_UN'), rule('PRESENT_PRESENT')
@@ -268,13 +282,24 @@ std::string KeywordSpec::describeCondition() const {
   return s;
 }
 
-Catalogue Catalogue::fromSources(const std::vector<CatalogueSource>& sources) {
+Catalogue Catalogue::fromSources(const std::vector<CatalogueSource>& sources,
+                                 const std::vector<CatalogueSource>& commons) {
   Catalogue cat;
   for (const auto& src : sources) {
     LuaState state;
     lua_State* L = state.L;
     luaL_openlibs(L);
     if (luaL_dostring(L, kPrelude) != LUA_OK) throw Error(std::string("catalogue prelude: ") + lua_tostring(L, -1));
+    for (const auto& common : commons) {
+      const std::string chunk = std::string("@commands/commons/") + common.name + ".lua";
+      if (luaL_loadbuffer(L, common.text, std::strlen(common.text), chunk.c_str()) != LUA_OK ||
+          lua_pcall(L, 0, 0, 0) != LUA_OK)
+        throw Error(std::string("catalogue file: ") + lua_tostring(L, -1));
+      if (lua_getglobal(L, common.name) == LUA_TNIL)
+        throw Error("catalogue file commands/commons/" + std::string(common.name) + ".lua: it must define " +
+                    common.name);
+      lua_pop(L, 1);
+    }
     const std::string chunk = std::string("@commands/") + src.name + ".lua";
     if (luaL_loadbuffer(L, src.text, std::strlen(src.text), chunk.c_str()) != LUA_OK ||
         lua_pcall(L, 0, 1, 0) != LUA_OK)
@@ -287,7 +312,7 @@ Catalogue Catalogue::fromSources(const std::vector<CatalogueSource>& sources) {
 }
 
 const Catalogue& Catalogue::builtin() {
-  static const Catalogue cat = fromSources(catalogueSources());
+  static const Catalogue cat = fromSources(catalogueSources(), catalogueCommons());
   return cat;
 }
 

@@ -65,8 +65,10 @@ class Catalogue {
  public:
   // The catalogue compiled into the program (loaded once).
   static const Catalogue& builtin();
-  // Reads catalogue files; throws aster::Error naming the file on a bad entry.
-  static Catalogue fromSources(const std::vector<CatalogueSource>& sources);
+  // Reads catalogue files, each after the common groups (commands/commons/);
+  // throws aster::Error naming the file on a bad entry.
+  static Catalogue fromSources(const std::vector<CatalogueSource>& sources,
+                               const std::vector<CatalogueSource>& commons = {});
 
   const CommandSpec* find(const std::string& name) const;
   const std::map<std::string, CommandSpec>& commands() const { return commands_; }

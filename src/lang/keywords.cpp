@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/number_format.hpp"
+
 namespace aster::lang {
 
 std::string visibleText(const std::string& text) {
@@ -25,7 +27,7 @@ std::string Value::describe() const {
       if (std::isnan(real))
         s << "nan";  // not "-nan", which 0/0 gives on x86
       else
-        s << real;
+        s << format::significant(real, 6);
       break;
     case Kind::Text: s << "'" << visibleText(text) << "'"; break;
     case Kind::Concept: s << "a " << (concept ? concept->typeName() : "null concept"); break;
@@ -85,17 +87,11 @@ const Value& Keywords::value(const std::string& key) const {
 }
 
 double Keywords::real(const std::string& key) const { return value(key).real; }
-double Keywords::real(const std::string& key, double fallback) const {
-  return has(key) ? real(key) : fallback;
-}
 long long Keywords::integer(const std::string& key) const {
   const Value& v = value(key);
   return v.kind == Value::Kind::Integer ? v.integer : static_cast<long long>(std::llround(v.real));
 }
 const std::string& Keywords::text(const std::string& key) const { return value(key).text; }
-std::string Keywords::text(const std::string& key, const std::string& fallback) const {
-  return has(key) ? text(key) : fallback;
-}
 
 std::vector<double> Keywords::reals(const std::string& key) const {
   std::vector<double> out;

@@ -21,6 +21,9 @@ class Keywords {
   void erase(const std::string& key);
 
   // ---- reading ----
+  // A keyword with a catalogue default is always present after validation, so
+  // there is no reading with a fallback: the catalogue is the one source of
+  // defaults. A keyword without one is read after has().
   bool has(const std::string& key) const;
   bool isFactor(const std::string& key) const;
   std::vector<std::string> keys() const;  // in the order they were set
@@ -28,10 +31,8 @@ class Keywords {
   const std::vector<Value>& values(const std::string& key) const;
   const Value& value(const std::string& key) const;  // the single value
   double real(const std::string& key) const;
-  double real(const std::string& key, double fallback) const;
   long long integer(const std::string& key) const;
   const std::string& text(const std::string& key) const;
-  std::string text(const std::string& key, const std::string& fallback) const;
   std::vector<double> reals(const std::string& key) const;
   std::vector<std::string> texts(const std::string& key) const;
   ConceptPtr conceptPtr(const std::string& key) const;

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "mesh/group_ops.hpp"
 
 namespace aster::mesh {
@@ -15,11 +16,7 @@ namespace {
 
 constexpr std::size_t kListed = 10;  // names listed in a message, then a count
 
-std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
+std::string sci(double v) { return format::significant(v, 3); }
 
 // "a, b, c" then "and 12 more".
 std::string listed(const std::vector<std::string>& items) {

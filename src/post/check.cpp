@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/number_format.hpp"
+
 namespace aster::post {
 namespace {
 
@@ -39,12 +41,6 @@ std::string column(const std::string& s) {
 
 }  // namespace
 
-std::string formatNumber(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.12G", v);
-  return buf;
-}
-
 std::vector<CheckLine> check(double computed, const CheckSpec& spec) {
   std::vector<CheckLine> lines;
   if (spec.hasValeCalc)
@@ -65,11 +61,10 @@ std::string formatCheck(const std::vector<std::pair<std::string, std::string>>& 
   std::string out = head + "\n" + vals + "\n      " + column("REFERENCE") + column("LEGENDE") + column("VALE_REFE") +
                     column("VALE_CALC") + column("ERREUR") + "TOLE\n";
   for (const auto& l : lines) {
-    char err[32], tol[32];
-    std::snprintf(err, sizeof err, l.relative ? "%.3E%%" : "%.3E", l.error);
-    std::snprintf(tol, sizeof tol, l.relative ? "%.3E%%" : "%.3E", l.tolerance);
+    const std::string percent = l.relative ? "%" : "";
     out += std::string(l.ok ? " OK   " : " NOOK ") + column(l.reference) + column(legende) +
-           column(formatNumber(l.expected)) + column(formatNumber(l.computed)) + column(err) + tol + "\n";
+           column(format::asterValue(l.expected)) + column(format::asterValue(l.computed)) +
+           column(format::scientific(l.error, 3) + percent) + format::scientific(l.tolerance, 3) + percent + "\n";
   }
   return out;
 }

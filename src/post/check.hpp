@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/number_format.hpp"
+
 namespace aster::post {
 
 struct CheckSpec {
@@ -42,7 +44,7 @@ std::vector<CheckLine> check(double computed, const CheckSpec& spec);
 std::string formatCheck(const std::vector<std::pair<std::string, std::string>>& what,
                         const std::vector<CheckLine>& lines, const std::string& legende);
 
-// A number as the .resu file writes it (12 significant digits).
-std::string formatNumber(double v);
+// A number as the .resu file writes it (12 significant digits): format::asterValue.
+inline std::string formatNumber(double v) { return format::asterValue(v); }
 
 }  // namespace aster::post

@@ -26,6 +26,19 @@ TEST(DofMap, UniformAndExtraDofs) {
   EXPECT_THROW(c.at(4, 0), aster::Error);
 }
 
+// A cell's DOF list, worked by hand: node 0 owns DOFs 0-1, node 1 none, node 2 DOFs 2-4.
+TEST(DofMap, NodeDofsAreNodeMajorAndMinusOneWithoutDofs) {
+  const DofMap map(std::vector<int>{2, 0, 3});
+  const std::vector<int> nodes = {2, 0, 1};
+  std::vector<int> dofs = {7};  // appended after what is there
+  map.appendNodeDofs(nodes.data(), nodes.data() + nodes.size(), 2, dofs);
+  EXPECT_EQ(dofs, (std::vector<int>{7, 2, 3, 0, 1, -1, -1}));
+  ElementDofs elements;
+  EXPECT_THROW(elements.addCells({{0, 1}}, map, 2), aster::Error);  // node 1 has no DX, DY
+  elements.addCells({{2, 0}}, map, 2);
+  EXPECT_EQ(std::vector<int>(elements.dofs(0), elements.dofs(0) + elements.size(0)), (std::vector<int>{2, 3, 0, 1}));
+}
+
 TEST(AssemblyPattern, MatchesDenseAssembly) {
   // A strip of 3 QUAD4 (nodes 0..7) plus a 2-node "contact" element with an
   // extra DOF on node 7, and an element with an eliminated DOF (-1).

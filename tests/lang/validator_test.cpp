@@ -259,6 +259,46 @@ TEST(Catalogue, NameMustMatchTheFile) {
   EXPECT_THROW(Catalogue::fromSources({{"AUTRE", "return PROC{ nom = 'MAUVAIS' }"}}), Error);
 }
 
+// A common group (commands/commons/C_PAIRE.lua) used twice, with two value types.
+const char* kPaire = R"(
+function C_PAIRE(typ)
+  return KEYWORDS{ SIMP{ 'A', typ = typ }, SIMP{ 'B', typ = typ, defaut = 2 } }
+end
+)";
+
+TEST(Catalogue, CommonGroupIsSplicedWhereItIsPlaced) {
+  const char* command = R"(
+return PROC{ nom = 'ESSAI_COMMUN',
+  SIMP{ 'DEBUT', typ = 'TXM' },
+  C_PAIRE('R'),
+  SIMP{ 'FIN', typ = 'TXM' },
+  FACT{ 'F', C_PAIRE('I') },
+}
+)";
+  const Catalogue cat = Catalogue::fromSources({{"ESSAI_COMMUN", command}}, {{"C_PAIRE", kPaire}});
+  const CommandSpec& spec = *cat.find("ESSAI_COMMUN");
+  std::vector<std::string> names;
+  for (const auto& k : spec.children) names.push_back(k.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"DEBUT", "A", "B", "FIN", "F"}));
+  EXPECT_EQ(spec.children[1].types, std::vector<std::string>{"R"});
+  const auto& f = spec.children[4].children;
+  ASSERT_EQ(f.size(), 2u);
+  EXPECT_EQ(f[0].name, "A");
+  EXPECT_EQ(f[0].types, std::vector<std::string>{"I"});
+  ASSERT_EQ(f[1].defaults.size(), 1u);
+  EXPECT_EQ(f[1].defaults[0].integer, 2);
+}
+
+TEST(Catalogue, CommonFileMustDefineItsName) {
+  try {
+    Catalogue::fromSources({{"DEBUT", "return PROC{ nom = 'DEBUT' }"}}, {{"C_AUTRE", kPaire}});
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("commands/commons/C_AUTRE.lua: it must define C_AUTRE"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Catalogue, BuiltinLoads) {
   const Catalogue& cat = Catalogue::builtin();
   ASSERT_NE(cat.find("DEBUT"), nullptr);
