@@ -1,4 +1,5 @@
 #include "analysis/mechanical_system.hpp"
+#include "core/number_format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,8 +32,8 @@ double loadValue(const model::SpaceFunction& f, const char* load, const char* co
   try {
     return f.checked(x, y, z, t);
   } catch (const Error& e) {
-    throw Error(std::string(load) + " " + component + where + " at X = " + expr::numberText(x) +
-                ", Y = " + expr::numberText(y) + ", INST = " + expr::numberText(t) + ": " + e.what());
+    throw Error(std::string(load) + " " + component + where + " at X = " + format::shortest(x) +
+                ", Y = " + format::shortest(y) + ", INST = " + format::shortest(t) + ": " + e.what());
   }
 }
 
@@ -42,7 +43,7 @@ double AppliedLoad::factor(double t) const {
   if (!multiplier) return 1.0;
   const double v = multiplier->evaluate(&t);
   if (std::isfinite(v)) return v;
-  std::string why = "the function returns " + expr::numberText(v);
+  std::string why = "the function returns " + format::shortest(v);
   if (const auto* e = dynamic_cast<const expr::Expression*>(multiplier.get())) {
     try {
       e->evaluateChecked(&t);
@@ -50,7 +51,7 @@ double AppliedLoad::factor(double t) const {
       why = failure.what();
     }
   }
-  throw Error("FONC_MULT at INST = " + expr::numberText(t) + ": " + why);
+  throw Error("FONC_MULT at INST = " + format::shortest(t) + ": " + why);
 }
 
 MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::move(problem)) {

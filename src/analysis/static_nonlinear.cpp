@@ -8,20 +8,19 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
+#include "core/number_format.hpp"
 #include "linalg/blas_info.hpp"
 #include "linalg/linear_solver.hpp"
 
 namespace aster::analysis {
+
+using format::scientific;
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
 
-std::string sci(double v, int digits = 6) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*E", digits, v);
-  return buf;
-}
 
 }  // namespace
 
@@ -121,7 +120,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     it.start = Clock::now();
     // Ctrl-C: the unconverged instant is abandoned; the converged ones are kept.
     if (interrupt::requested())
-      throw Interrupted("interrupted (SIGINT) during the instant " + sci(t1) + " (Newton iteration " +
+      throw Interrupted("interrupted (SIGINT) during the instant " + scientific(t1, 6) + " (Newton iteration " +
                         std::to_string(k) + "), which is abandoned");
     if (terms_ && terms_->update(U)) buildPattern();
     if (!pattern_) buildPattern();
@@ -154,12 +153,12 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     if (verdict == Verdict::Exhausted) {
       report(it, "");
       why = "no convergence in ITER_GLOB_MAXI = " + std::to_string(settings_.iterGlobMaxi) + " Newton iterations (" +
-            (settings_.useRela ? "RESI_GLOB_RELA = " + sci(it.rela, 3) + (settings_.useMaxi ? ", " : "") : "") +
-            (settings_.useMaxi ? "RESI_GLOB_MAXI = " + sci(it.resMax, 3) : "") + ")";
+            (settings_.useRela ? "RESI_GLOB_RELA = " + scientific(it.rela, 3) + (settings_.useMaxi ? ", " : "") : "") +
+            (settings_.useMaxi ? "RESI_GLOB_MAXI = " + scientific(it.resMax, 3) : "") + ")";
       stats_.iterations += k;
       if (!settings_.arret && it.dirichletMet) {
         // CONVERGENCE/ARRET='NON': the step is kept as it is.
-        Messages::alarm("STAT_NON_LINE", "instant " + sci(t1) + ": " + why +
+        Messages::alarm("STAT_NON_LINE", "instant " + scientific(t1, 6) + ": " + why +
                                              "; the step is accepted as it is (CONVERGENCE/ARRET='NON')");
         finishStep(U, step.Ustart, t1 - t0);
         for (NewtonObserver* o : observers_) o->stepConverged(t1, k, false);
@@ -398,9 +397,10 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
     if (terms_) terms_->restoreStatus();
     if (level >= settings_.subdNiveau || settings_.subdPas < 2) return false;
     ++stats_.cuts;
-    Messages::alarm("STAT_NON_LINE", "instant " + sci(t1) + ": " + why + "; the step [" + sci(t0, 4) + ", " +
-                                         sci(t1, 4) + "] is cut into " + std::to_string(settings_.subdPas) +
-                                         " (level " + std::to_string(level + 1) + ")");
+    Messages::alarm("STAT_NON_LINE", "instant " + scientific(t1, 6) + ": " + why + "; the step [" + scientific(t0, 4) +
+                                         ", " + scientific(t1, 4) + "] is cut into " +
+                                         std::to_string(settings_.subdPas) + " (level " + std::to_string(level + 1) +
+                                         ")");
     for (NewtonObserver* o : observers_) o->stepCut(t0, t1, settings_.subdPas, level + 1, why);
     for (int i = 1; i <= settings_.subdPas; ++i) {
       const double a = t0 + (t1 - t0) * (i - 1) / settings_.subdPas;
@@ -420,7 +420,7 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
                                  "whose corrections do not reduce the residual: check the Dirichlet conditions "
                                  "(the default NPREC names a free unknown)"
                                : "";
-      throw Error("the instant " + sci(times[k]) + " did not converge: " + why +
+      throw Error("the instant " + scientific(times[k], 6) + " did not converge: " + why +
                   (settings_.subdNiveau > 0 ? " (even after cutting the step " + std::to_string(settings_.subdNiveau) +
                                                   " times)"
                                             : "") +

@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "commands/function_concepts.hpp"
+#include "core/number_format.hpp"
 #include "commands/table_concept.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
@@ -40,7 +41,7 @@ ConceptPtr recuFonction(const Keywords& k, Session&, ConceptPtr) {
   auto f = std::make_shared<expr::Tabulated>(k.has("NOM_PARA") ? k.text("NOM_PARA") : px, x, y, tabulatedOptionsOf(k));
   if (k.integer("INFO") >= 2) {
     std::string s = "RECU_FONCTION " + px + " -> " + py + ":\n";
-    for (std::size_t i = 0; i < x.size(); ++i) s += "  " + expr::numberText(x[i]) + "  " + expr::numberText(y[i]) + "\n";
+    for (std::size_t i = 0; i < x.size(); ++i) s += "  " + format::shortest(x[i]) + "  " + format::shortest(y[i]) + "\n";
     Messages::info(s);
   }
   return std::make_shared<FunctionConcept>("fonction_sdaster", f);

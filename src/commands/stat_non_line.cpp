@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "commands/contact_concept.hpp"
+#include "core/number_format.hpp"
 #include "commands/field_concepts.hpp"
 #include "commands/function_concepts.hpp"
 #include "commands/list_inst_concept.hpp"
@@ -59,7 +60,7 @@ std::vector<double> instantsOf(const Keywords& inc, int& subdPas, int& subdNivea
     if (t >= t0 - eps && t <= t1 + eps) out.push_back(t);
   if (out.empty() || std::fabs(out.front() - t0) > eps)
     throw Error(std::string(inc.has("INST_INIT") ? "INCREMENT/INST_INIT=" : "the initial instant ") +
-                post::formatNumber(t0) + (!inc.has("INST_INIT") && initialTime ? " (ETAT_INIT's)" : "") +
+                format::asterValue(t0) + (!inc.has("INST_INIT") && initialTime ? " (ETAT_INIT's)" : "") +
                 " is not an instant of LIST_INST");
   if (out.size() < 2) throw Error("INCREMENT: no instant to compute between INST_INIT and INST_FIN");
   return out;

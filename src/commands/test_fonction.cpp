@@ -2,6 +2,7 @@
 #include "commands/check_keywords.hpp"
 #include "commands/function_concepts.hpp"
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "lang/operators.hpp"
 #include "post/check.hpp"
 

@@ -10,6 +10,7 @@
 #include "commands/elga_field.hpp"
 #include "commands/field_concepts.hpp"
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "lang/operators.hpp"
 #include "post/check.hpp"
 

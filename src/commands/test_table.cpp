@@ -6,6 +6,7 @@
 #include "commands/check_keywords.hpp"
 #include "commands/table_concept.hpp"
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "lang/operators.hpp"
 #include "post/check.hpp"
 

@@ -1,6 +1,7 @@
 // FORMULE compiler: lexer, recursive-descent parser with Python's precedence,
 // constant folding, emission of postfix code; and the checked evaluation.
 #include "expr/expression.hpp"
+#include "core/number_format.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -146,7 +147,7 @@ std::string excerpt(const std::string& text, int column) {
 
 // A number inside an operation's description: parenthesised when negative.
 std::string operand(double x) {
-  std::string t = numberText(x);
+  std::string t = format::shortest(x);
   return x < 0 ? "(" + t + ")" : t;
 }
 
@@ -154,8 +155,8 @@ std::string describeFailure(const Instruction& in, const double* x,
                             const std::vector<double>& constants) {
   switch (in.op) {
     case OpCode::Divide:
-      if (x[1] == 0.0) return "division by zero (" + numberText(x[0]) + " / 0)";
-      return "overflow in division (" + numberText(x[0]) + " / " + numberText(x[1]) + ")";
+      if (x[1] == 0.0) return "division by zero (" + format::shortest(x[0]) + " / 0)";
+      return "overflow in division (" + format::shortest(x[0]) + " / " + format::shortest(x[1]) + ")";
     case OpCode::Power:
     case OpCode::PowerConstant:
     case OpCode::PowerInteger:
@@ -176,13 +177,13 @@ std::string describeFailure(const Instruction& in, const double* x,
     case OpCode::Log10: {
       std::string f = opName(in.op);
       if (x[0] == 0.0) return f + " of zero";
-      return f + " of a negative number (" + f + "(" + numberText(x[0]) + "))";
+      return f + " of a negative number (" + f + "(" + format::shortest(x[0]) + "))";
     }
     case OpCode::Sqrt:
-      return "sqrt of a negative number (sqrt(" + numberText(x[0]) + "))";
+      return "sqrt of a negative number (sqrt(" + format::shortest(x[0]) + "))";
     case OpCode::Asin:
     case OpCode::Acos:
-      return std::string(opName(in.op)) + " of " + numberText(x[0]) + ", outside [-1, 1]";
+      return std::string(opName(in.op)) + " of " + format::shortest(x[0]) + ", outside [-1, 1]";
     case OpCode::Negate:
     case OpCode::Abs:
     case OpCode::Min:
@@ -190,12 +191,12 @@ std::string describeFailure(const Instruction& in, const double* x,
     case OpCode::Add:
     case OpCode::Subtract:
     case OpCode::Multiply:
-      return std::string("overflow in ") + numberText(x[0]) + " " + opName(in.op) + " " +
+      return std::string("overflow in ") + format::shortest(x[0]) + " " + opName(in.op) + " " +
              operand(x[1]);
     default:
       if (arity(in) == 1)
         return std::string("overflow or domain error in ") + opName(in.op) + "(" +
-               numberText(x[0]) + ")";
+               format::shortest(x[0]) + ")";
   }
   return std::string("operation '") + opName(in.op) + "' gives a non-finite value";
 }
@@ -639,12 +640,12 @@ double Expression::evaluateChecked(const double* args) const {
   auto values = [&] {
     std::string out;
     for (std::size_t i = 0; i < params_.size(); ++i)
-      out += (i ? ", " : "") + params_[i] + " = " + numberText(args[i]);
+      out += (i ? ", " : "") + params_[i] + " = " + format::shortest(args[i]);
     return out.empty() ? std::string("no parameters") : out;
   };
   for (std::size_t i = 0; i < params_.size(); ++i)
     if (!std::isfinite(args[i]))
-      throw Error("parameter " + params_[i] + " = " + numberText(args[i]) +
+      throw Error("parameter " + params_[i] + " = " + format::shortest(args[i]) +
                   " is not a finite number, evaluating " + excerpt(text_, 1));
   double inlineStack[kInlineDepth] = {};
   std::vector<double> heap;

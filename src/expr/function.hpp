@@ -6,8 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "core/number_format.hpp"
-
 namespace aster::expr {
 
 class Function {
@@ -26,8 +24,6 @@ class Function {
 
 using FunctionPtr = std::shared_ptr<const Function>;
 
-// Shortest text that reads back to the same double ("2.5", "0", "1e-05"), for messages.
-inline std::string numberText(double value) { return format::shortest(value); }
 
 // "X, Y" (or "none"), for messages that list names.
 std::string joinNames(const std::vector<std::string>& names);

@@ -1,4 +1,5 @@
 #include "expr/tabulated.hpp"
+#include "core/number_format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,17 +36,17 @@ Tabulated::Tabulated(std::string parameter, std::vector<double> abscissas,
   for (std::size_t i = 0; i < x_.size(); ++i) {
     if (!std::isfinite(x_[i]) || !std::isfinite(y_[i]))
       throw Error("function of " + name + ": point " + std::to_string(i) + " (" +
-                  numberText(x_[i]) + ", " + numberText(y_[i]) + ") is not finite");
+                  format::shortest(x_[i]) + ", " + format::shortest(y_[i]) + ") is not finite");
     if (i > 0 && !(x_[i] > x_[i - 1]))
       throw Error("function of " + name + ": abscissas must be strictly increasing, but " + name +
-                  "[" + std::to_string(i) + "] = " + numberText(x_[i]) + " follows " + name + "[" +
-                  std::to_string(i - 1) + "] = " + numberText(x_[i - 1]) + " (0-based indices)");
+                  "[" + std::to_string(i) + "] = " + format::shortest(x_[i]) + " follows " + name + "[" +
+                  std::to_string(i - 1) + "] = " + format::shortest(x_[i - 1]) + " (0-based indices)");
     if (options_.abscissa == Interpolation::Logarithmic && !(x_[i] > 0))
       throw Error("function of " + name + ": INTERPOL 'LOG' on the abscissas needs positive values, "
-                  "but " + name + "[" + std::to_string(i) + "] = " + numberText(x_[i]));
+                  "but " + name + "[" + std::to_string(i) + "] = " + format::shortest(x_[i]));
     if (options_.ordinate == Interpolation::Logarithmic && !(y_[i] > 0))
       throw Error("function of " + name + ": INTERPOL 'LOG' on the ordinates needs positive values, "
-                  "but ordinate " + std::to_string(i) + " = " + numberText(y_[i]));
+                  "but ordinate " + std::to_string(i) + " = " + format::shortest(y_[i]));
   }
   if (x_.size() == 1 &&
       (options_.left == Extension::Linear || options_.right == Extension::Linear))
@@ -71,7 +72,7 @@ double Tabulated::onSegment(std::size_t i, double x) const {
   const bool logY = options_.ordinate == Interpolation::Logarithmic;
   if (logX && !(x > 0))
     throw Error("function of " + parameter_[0] + " with INTERPOL 'LOG' on the abscissas: " +
-                parameter_[0] + " = " + numberText(x) + " is not positive");
+                parameter_[0] + " = " + format::shortest(x) + " is not positive");
   const double x0 = logX ? std::log(x_[i]) : x_[i];
   const double x1 = logX ? std::log(x_[i + 1]) : x_[i + 1];
   const double y0 = logY ? std::log(y_[i]) : y_[i];
@@ -82,8 +83,8 @@ double Tabulated::onSegment(std::size_t i, double x) const {
 }
 
 void Tabulated::outside(double x, const char* side) const {
-  throw Error("parameter " + parameter_[0] + " = " + numberText(x) + " is outside [" +
-              numberText(x_.front()) + ", " + numberText(x_.back()) + "] and " + side +
+  throw Error("parameter " + parameter_[0] + " = " + format::shortest(x) + " is outside [" +
+              format::shortest(x_.front()) + ", " + format::shortest(x_.back()) + "] and " + side +
               "='EXCLU'");
 }
 

@@ -1,4 +1,5 @@
 #include "mechanics/manufactured.hpp"
+#include "core/number_format.hpp"
 
 #include <cmath>
 #include <type_traits>
@@ -17,7 +18,6 @@ using expr::ExpressionPtr;
 using expr::Function;
 using expr::FunctionPtr;
 using expr::joinNames;
-using expr::numberText;
 
 namespace {
 
@@ -55,8 +55,8 @@ void stressFromGradient(const T G[2][2], double lambda, double mu, Kinematics ki
 Eigen::Vector2d unitNormal(const Eigen::Vector2d& N) {
   const double norm = N.norm();
   if (!(norm > 0) || !std::isfinite(norm))
-    throw Error("manufactured solution: the boundary normal (" + numberText(N.x()) + ", " +
-                numberText(N.y()) + ") is not a direction");
+    throw Error("manufactured solution: the boundary normal (" + format::shortest(N.x()) + ", " +
+                format::shortest(N.y()) + ") is not a direction");
   return N / norm;
 }
 
@@ -81,9 +81,9 @@ ManufacturedElasticity::ManufacturedElasticity(ExpressionPtr ux, ExpressionPtr u
                     " must be a function of X and Y only, it takes (" + joinNames(names) + ")");
     }
   }
-  if (!(young > 0)) throw Error("manufactured solution: E = " + numberText(young) + " must be > 0");
+  if (!(young > 0)) throw Error("manufactured solution: E = " + format::shortest(young) + " must be > 0");
   if (!(poisson > -1.0 && poisson < 0.5))
-    throw Error("manufactured solution: NU = " + numberText(poisson) + " must be in ]-1, 0.5[");
+    throw Error("manufactured solution: NU = " + format::shortest(poisson) + " must be in ]-1, 0.5[");
   const IsotropicElasticity law(young, poisson, hypothesis);
   lambda_ = law.planeLambda();
   mu_ = law.mu();
@@ -160,8 +160,8 @@ ContactTraction ManufacturedElasticity::contact(double X, double Y,
     const Eigen::Matrix2d F = Eigen::Matrix2d::Identity() + displacementGradient(X, Y);
     const double J = F.determinant();
     if (!(J > 0))
-      throw Error("manufactured solution: det F = " + numberText(J) + " <= 0 at X = " +
-                  numberText(X) + ", Y = " + numberText(Y));
+      throw Error("manufactured solution: det F = " + format::shortest(J) + " <= 0 at X = " +
+                  format::shortest(X) + ", Y = " + format::shortest(Y));
     n = F.inverse().transpose() * unitN;  // Nanson
     n.normalize();
   }

@@ -1,4 +1,5 @@
 #include "model/space_function.hpp"
+#include "core/number_format.hpp"
 
 #include <cmath>
 
@@ -30,7 +31,7 @@ double SpaceFunction::checked(double x, double y, double z, double t) const {
   for (int i = 0; i < count_; ++i) args[i] = all[slot_[i]];
   if (const auto* e = dynamic_cast<const expr::Expression*>(f_.get())) return e->evaluateChecked(args);
   const double v = f_->evaluate(args);
-  if (!std::isfinite(v)) throw Error("the function returns " + expr::numberText(v));
+  if (!std::isfinite(v)) throw Error("the function returns " + format::shortest(v));
   return v;
 }
 

@@ -7,7 +7,6 @@
 #include <utility>
 #include <vector>
 
-#include "core/number_format.hpp"
 
 namespace aster::post {
 
@@ -43,8 +42,5 @@ std::vector<CheckLine> check(double computed, const CheckSpec& spec);
 //  OK   NON_REGRESSION   XXXX             0.125            0.125            0.000E+00%       1.000E-04%
 std::string formatCheck(const std::vector<std::pair<std::string, std::string>>& what,
                         const std::vector<CheckLine>& lines, const std::string& legende);
-
-// A number as the .resu file writes it (12 significant digits): format::asterValue.
-inline std::string formatNumber(double v) { return format::asterValue(v); }
 
 }  // namespace aster::post
