@@ -115,4 +115,23 @@ typename aster::mechanics::PlaneElement<T>::Coords distortedCell(unsigned seed) 
   return X;
 }
 
+// The element's tangent by central differences of its internal force (step 1e-6:
+// truncation and rounding errors both about 1e-10 relative for these cells).
+template <class Element>
+typename Element::Matrix differenceTangent(const Element& element, const typename Element::Coords& X,
+                                           const typename Element::Vector& u) {
+  const double step = 1e-6;
+  typename Element::Matrix K;
+  typename Element::Vector fp, fm;
+  for (int j = 0; j < Element::dofs; ++j) {
+    typename Element::Vector up = u, um = u;
+    up(j) += step;
+    um(j) -= step;
+    element.internalForce(X, up, &fp, nullptr);
+    element.internalForce(X, um, &fm, nullptr);
+    K.col(j) = (fp - fm) / (2 * step);
+  }
+  return K;
+}
+
 }  // namespace testing_support
