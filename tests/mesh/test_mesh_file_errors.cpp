@@ -161,6 +161,39 @@ TEST(MshCheck, SectionLeftOpenOrClosedWrongly) {
   EXPECT_EQ(gmshError(path), path + ":4: found $EndNodes outside any section (expected $Nodes before it)");
 }
 
+// gmsh reads the lines between sections with fgets, in pieces of at most 254
+// or 1022 bytes, and opens a section at each piece that starts with "$<name>",
+// comparing the beginning of the name only.
+TEST(MshCheck, LinesAsGmshReadsThem) {
+  // A header line longer than gmsh's buffer: its second piece would be the version line.
+  std::string path = writeFile("long_header.msh", "$MeshFormat" + std::string(244, ' ') + "2.2 0 8" + file41().substr(11));
+  EXPECT_EQ(gmshError(path), path + ":1: found a header line of 262 bytes (expected at most 254)");
+
+  // A '$' inside a long line starts a piece that gmsh reads as a section marker.
+  path = writeFile("long_line.msh", kHeader22 + std::string(300, 'x') + "$Nodes\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":4: found a line of 306 bytes with a '$' at column 301 (expected '$' only at the "
+                                 "start of a line longer than 254 bytes: gmsh reads such a line in pieces, and a "
+                                 "piece starting with '$' would open a section)");
+
+  // gmsh's MSH 2 reader opens a section at every '$' line, also in $Comments.
+  path = writeFile("comment_nodes.msh",
+                   kHeader22 + "$Comments\n$Nodes\n1\n1 0 0 nan\n$EndComments\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":5: found $Nodes inside section $Comments opened at line 4 (expected $EndComments "
+                                 "first: gmsh reads $Nodes there)");
+
+  // "$NodesX" is read by gmsh as $Nodes, "$NOD" as the nodes of MSH 1.
+  path = writeFile("nodes_x.msh", kHeader22 + "$NodesX\n1\n1 0 0 nan\n$EndNodesX\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":4: found $NodesX, which gmsh reads as section $Nodes (it compares the beginnings "
+                                 "of section names; expected $Nodes)");
+  path = writeFile("nod.msh", kHeader22 + "$NOD\n1\n1 0 0 nan\n$ENDNOD\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":4: found $NOD, which gmsh reads as section $Nodes (it compares the beginnings of "
+                                 "section names; expected $Nodes)");
+}
+
 TEST(MshCheck, Version22CountsAndLines) {
   std::string path = writeFile("few_nodes.msh",
                                kHeader22 + "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n" + kElements22);

@@ -125,6 +125,46 @@ std::string physicalNameError(const std::string& text) {
   return "";
 }
 
+// The section gmsh reads where a line starts with "$<name>": it compares the
+// beginnings of names only ("$NodesX" is read as $Nodes), in this order, in its
+// mesh readers and, when the file holds post-processing data, in its data
+// reader. "" when gmsh skips the section.
+std::string sectionReadByGmsh(int version, const std::string& name) {
+  struct Prefix {
+    const char* prefix;
+    const char* section;
+  };
+  static const Prefix k4[] = {{"MeshFormat", "MeshFormat"},
+                              {"PhysicalNames", "PhysicalNames"},
+                              {"Entities", "Entities"},
+                              {"PartitionedEntities", "PartitionedEntities"},
+                              {"Nodes", "Nodes"},
+                              {"Elements", "Elements"},
+                              {"Periodic", "Periodic"},
+                              {"GhostElements", "GhostElements"},
+                              {"Parametrizations", "Parametrizations"},
+                              {"NodeData", "NodeData"},
+                              {"ElementData", "ElementData"},
+                              {"ElementNodeData", "ElementNodeData"},
+                              {"InterpolationScheme", "InterpolationScheme"}};
+  static const Prefix k22[] = {{"MeshFormat", "MeshFormat"}, {"PhysicalNames", "PhysicalNames"},
+                               {"NO", "Nodes"},              {"Nodes", "Nodes"},
+                               {"ParametricNodes", "ParametricNodes"}, {"ELM", "Elements"},
+                               {"Elements", "Elements"},     {"Periodic", "Periodic"},
+                               {"NodeData", "NodeData"},     {"ElementData", "ElementData"},
+                               {"ElementNodeData", "ElementNodeData"}, {"InterpolationScheme", "InterpolationScheme"}};
+  const auto read = [&](const auto& table) -> std::string {
+    for (const auto& p : table)
+      if (name.rfind(p.prefix, 0) == 0) return p.section;
+    return "";
+  };
+  return version == 22 ? read(k22) : read(k4);
+}
+
+// gmsh's line buffers: fgets reads at most 1022 bytes and the newline in its MSH 4
+// reader, 254 and the newline in its MSH 2 reader and in its data reader.
+constexpr std::size_t kShortChunk = 255, kLongChunk = 1023;
+
 // A binary .msh file (file type 1), checked in full before gmsh reads it:
 // gmsh's binary readers trust every count, tag and size they read (a block
 // longer than its section's count overruns their arrays, an unknown element
@@ -163,8 +203,11 @@ class BinaryMshChecker {
     for (;;) {
       const std::uint64_t at = pos_;
       std::string chunk;
-      // gmsh stops at the end of the file, also on a last line without newline.
-      if (!nextChunk(chunk) || chunk.back() != '\n') break;
+      if (!nextChunk(chunk)) break;
+      // gmsh stops when fgets meets the end of the file: on a last line without
+      // newline shorter than its buffer. A full chunk without newline is not the
+      // end: gmsh reads the next chunk where this one stops.
+      if (chunk.back() != '\n' && pos_ == size_ && chunk.size() < chunkSize()) break;
       if (chunk[0] == '$') section(chunk, at);  // other text between sections: gmsh skips it
     }
   }
@@ -175,10 +218,12 @@ class BinaryMshChecker {
                 std::to_string(sectionAt_) + "): " + what);
   }
 
+  std::size_t chunkSize() const { return version_ == 41 ? kLongChunk : kShortChunk; }
+
   // One line as gmsh's fgets reads it: up to and with '\n', at most 1023 bytes (255 for MSH 2.2).
   bool nextChunk(std::string& chunk) {
     chunk.clear();
-    const std::size_t max = version_ == 41 ? 1023 : 255;
+    const std::size_t max = chunkSize();
     char c = 0;
     while (chunk.size() < max && pos_ < size_ && in_.get(c)) {
       ++pos_;
@@ -232,8 +277,9 @@ class BinaryMshChecker {
   }
 
   void section(const std::string& chunk, std::uint64_t at) {
+    // The name: printable characters (gmsh would cut a name at a zero byte).
     std::size_t end = 1;
-    while (end < chunk.size() && !isBlank(chunk[end])) ++end;
+    while (end < chunk.size() && chunk[end] > ' ' && chunk[end] < 127) ++end;
     const std::string name = chunk.substr(1, end - 1);
     section_ = name;
     sectionAt_ = at;
@@ -257,35 +303,28 @@ class BinaryMshChecker {
       version_ == 41 ? elements41() : elements22();
       distinct(elements_, "element");
       endSection("the elements announced");
-    } else if (readByGmsh(name)) {
+    } else if (!sectionReadByGmsh(version_, name).empty()) {
       fail(at, std::string("aster-lite does not read section $") + name + " in a binary file (expected the sections " +
                    (version_ == 41 ? "$PhysicalNames, $Entities, $Nodes and $Elements" : "$PhysicalNames, $Nodes and $Elements") +
                    " only; save the mesh as ASCII to keep the others)");
     } else {
-      // A section gmsh does not know: it skips its lines up to "$End<name>".
+      // A section gmsh does not know: it skips chunks up to one whose text after
+      // the first byte starts with "End<name>" and the opening marker's trailer.
+      const std::string end = "End" + name + sectionTrailer_;
       std::string line;
       for (;;) {
         const std::uint64_t lineAt = pos_;
         if (!nextChunk(line))
           fail(lineAt, "the file ends inside section $" + name + " (expected $End" + name + "; truncated file?)");
+        if (line[0] != '$' && line.compare(1, end.size(), end) == 0)
+          fail(lineAt, "found " + shown(line) + " inside section $" + name + ", which ends the section for gmsh " +
+                           "(expected $End" + name + ")");
         if (line[0] != '$') continue;
         if (line != "$End" + name + sectionTrailer_ && !(pos_ == size_ && isEndAtEof(line)))
           fail(lineAt, "found " + shown(line) + " inside section $" + name + " (expected $End" + name + " first)");
         break;
       }
     }
-  }
-
-  // Section names gmsh reads (it compares their beginnings only).
-  bool readByGmsh(const std::string& name) const {
-    static const char* const k41[] = {"MeshFormat", "PhysicalNames", "Entities",   "PartitionedEntities",
-                                      "Nodes",      "Elements",      "Periodic",   "GhostElements",
-                                      "Parametrizations", "NodeData", "ElementData", "ElementNodeData"};
-    static const char* const k22[] = {"MeshFormat", "PhysicalNames", "NO", "Nodes", "ParametricNodes", "ELM",
-                                      "Elements", "Periodic", "NodeData", "ElementData", "ElementNodeData"};
-    auto matches = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
-    return version_ == 41 ? std::any_of(std::begin(k41), std::end(k41), matches)
-                          : std::any_of(std::begin(k22), std::end(k22), matches);
   }
 
   bool isEndAtEof(const std::string& line) const {
@@ -595,10 +634,12 @@ class MshChecker {
       fail(1, "found blanks before $MeshFormat (expected $MeshFormat at the start of the first line of " +
                   std::string(kMshExpected) + ")");
     const std::string firstLine = line;
+    headerLength(line);
     const char* headerForm = "'<version> <file-type> <data-size>', e.g. '4.1 0 8'";
     if (!std::getline(in, line))
       fail(line_, std::string("the file ends after $MeshFormat (expected ") + headerForm + ")");
     ++line_;
+    headerLength(line);
     const auto words = splitWords(line);
     double version = 0;
     long long fileType = 0, dataSize = 0;
@@ -625,9 +666,12 @@ class MshChecker {
     open("MeshFormat", first);
     while (std::getline(in, line)) {
       ++line_;
+      pieces(line);
       const auto w = splitWords(line);
       if (w.empty()) continue;
-      if (w[0][0] == '$' && !(section_ == "Comments" && w[0] != "$EndComments")) {
+      if (w[0][0] == '$' && section_ == "Comments" && w[0] != "$EndComments") {
+        comment(w[0]);
+      } else if (w[0][0] == '$') {
         marker(w[0]);
       } else if (!section_.empty()) {
         content(line, w);
@@ -645,6 +689,37 @@ class MshChecker {
 
   [[noreturn]] void fail(std::size_t line, const std::string& what) const {
     throw Error(path_ + ":" + std::to_string(line) + ": " + what);
+  }
+
+  // gmsh reads the two header lines with buffers of 255 bytes: a longer line
+  // would be read in pieces, the next piece as the version line.
+  void headerLength(const std::string& line) const {
+    if (line.size() >= kShortChunk)
+      fail(line_, "found a header line of " + plural(line.size(), "byte") + " (expected at most " +
+                      std::to_string(kShortChunk - 1) + ")");
+  }
+
+  // gmsh reads a line longer than its buffer in pieces (of 255 or 1023 bytes),
+  // and a piece that starts with '$' is a section marker to it: such a line may
+  // hold '$' only as its first byte.
+  void pieces(const std::string& line) const {
+    if (line.size() < kShortChunk) return;
+    const std::size_t dollar = line.find('$', 1);
+    if (dollar != std::string::npos)
+      fail(line_, "found a line of " + plural(line.size(), "byte") + " with a '$' at column " +
+                      std::to_string(dollar + 1) + " (expected '$' only at the start of a line longer than " +
+                      std::to_string(kShortChunk - 1) + " bytes: gmsh reads such a line in pieces, and a piece "
+                      "starting with '$' would open a section)");
+  }
+
+  // A '$' line inside $Comments: text, unless gmsh reads a section of its name
+  // there (its MSH 2 reader does not skip comments; its data reader neither).
+  void comment(const std::string& raw) const {
+    const std::string as = sectionReadByGmsh(version_, raw.substr(1));
+    if (!as.empty())
+      fail(line_, "found " + escaped(raw) + " inside section $Comments opened at line " +
+                      std::to_string(sectionLine_) + " (expected $EndComments first: gmsh reads $" + as +
+                      " there)");
   }
   // An error on a line inside a section: reported when the structure is sound.
   void defer(const std::string& what) {
@@ -684,6 +759,10 @@ class MshChecker {
     if (!section_.empty())
       fail(line_, "found " + word + " inside section $" + section_ + " opened at line " + std::to_string(sectionLine_) +
                       " (expected $End" + section_ + " first; truncated section?)");
+    const std::string as = sectionReadByGmsh(version_, raw.substr(1));
+    if (!as.empty() && as != raw.substr(1))
+      fail(line_, "found " + word + ", which gmsh reads as section $" + as +
+                      " (it compares the beginnings of section names; expected $" + as + ")");
     open(word.substr(1), line_);
   }
 
