@@ -188,6 +188,11 @@ TEST(MshCheck, LinesAsGmshReadsThem) {
   EXPECT_EQ(gmshError(path), path +
                                  ":4: found $NodesX, which gmsh reads as section $Nodes (it compares the beginnings "
                                  "of section names; expected $Nodes)");
+  // A second $MeshFormat: gmsh reads the file type again (here: the rest is binary).
+  path = writeFile("second_format.msh", kHeader22 + "$MeshFormat\n2.2 1 8\n$EndMeshFormat\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":4: found a second section $MeshFormat (expected one: gmsh would read the file type "
+                                 "again, and the rest of the file as binary if it says so)");
   path = writeFile("nod.msh", kHeader22 + "$NOD\n1\n1 0 0 nan\n$ENDNOD\n" + kNodes22 + kElements22);
   EXPECT_EQ(gmshError(path), path +
                                  ":4: found $NOD, which gmsh reads as section $Nodes (it compares the beginnings of "

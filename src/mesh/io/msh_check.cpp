@@ -763,6 +763,9 @@ class MshChecker {
     if (!as.empty() && as != raw.substr(1))
       fail(line_, "found " + word + ", which gmsh reads as section $" + as +
                       " (it compares the beginnings of section names; expected $" + as + ")");
+    if (as == "MeshFormat")
+      fail(line_, "found a second section $MeshFormat (expected one: gmsh would read the file type again, and the "
+                  "rest of the file as binary if it says so)");
     open(word.substr(1), line_);
   }
 
