@@ -199,6 +199,31 @@ TEST(MshCheck, LinesAsGmshReadsThem) {
                                  "section names; expected $Nodes)");
 }
 
+// Data sections are read by gmsh's data reader, which trusts the sizes it reads:
+// it sizes a matrix of $InterpolationScheme as announced, makes an object per time
+// step number up to the one read and sizes its tables by the largest entity tag.
+TEST(MshCheck, DataSectionsWithinWhatTheFileHolds) {
+  const auto checkError = [](const std::string& path) { return errorOf([&] { checkMshFile(path); }); };
+  const std::string data = "$NodeData\n1\n\"u\"\n1\n0\n3\n";  // lines 21-26; then the integer tags
+  EXPECT_EQ(readGmshMesh(writeFile("data_ok.msh", file41() + data + "0\n1\n2\n1 0.5\n4 -1\n$EndNodeData\n")).cellCount(), 1);
+
+  std::string path = writeFile("data_tag.msh", file41() + data + "0\n1\n1\n2000000000 0\n$EndNodeData\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":30: found '2000000000 0' in $NodeData (line 21) (expected a node tag 0 to 4, the "
+                                  "largest of the file so far, then its values)");
+  path = writeFile("data_step.msh", file41() + data + "2000000000\n1\n1\n1 0\n$EndNodeData\n");
+  EXPECT_EQ(checkError(path), path + ":29: time step 2000000000 in $NodeData (line 21) (expected 0 to 100000)");
+  path = writeFile("data_short.msh", file41() + data + "0\n3\n2\n1 0 0 0\n2 0 0\n$EndNodeData\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":31: found '2 0 0' in $NodeData (line 21) (expected 3 numbers after the node tag)");
+
+  path = writeFile("scheme.msh", file41() + "$InterpolationScheme\n\"x\"\n1\n3 1\n100000 100000\n$EndInterpolationScheme\n" +
+                                     data + "0\n1\n1\n1 0\n$EndNodeData\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":26: found $EndInterpolationScheme (section at line 21): a matrix of 100000 x "
+                                  "100000 with 0 numbers left (expected the numbers of the matrices announced)");
+}
+
 TEST(MshCheck, Version22CountsAndLines) {
   std::string path = writeFile("few_nodes.msh",
                                kHeader22 + "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n" + kElements22);

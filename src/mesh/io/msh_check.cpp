@@ -164,6 +164,9 @@ std::string sectionReadByGmsh(int version, const std::string& name) {
 // gmsh's line buffers: fgets reads at most 1022 bytes and the newline in its MSH 4
 // reader, 254 and the newline in its MSH 2 reader and in its data reader.
 constexpr std::size_t kShortChunk = 255, kLongChunk = 1023;
+// The largest time step of a data section ($NodeData...): gmsh makes an object for
+// each time step number up to the one it reads.
+constexpr long long kMaxDataStep = 100000;
 
 // A binary .msh file (file type 1), checked in full before gmsh reads it:
 // gmsh's binary readers trust every count, tag and size they read (a block
@@ -685,7 +688,7 @@ class MshChecker {
   }
 
  private:
-  enum class Kind { Other, Names, Nodes22, Elements22, Nodes41, Elements41 };
+  enum class Kind { Other, Names, Nodes22, Elements22, Nodes41, Elements41, Data, Scheme };
 
   [[noreturn]] void fail(std::size_t line, const std::string& what) const {
     throw Error(path_ + ":" + std::to_string(line) + ": " + what);
@@ -735,6 +738,10 @@ class MshChecker {
     if (name == "Elements" && version_ == 22) kind_ = Kind::Elements22;
     if (name == "Nodes" && version_ == 41) kind_ = Kind::Nodes41;
     if (name == "Elements" && version_ == 41) kind_ = Kind::Elements41;
+    if (name == "NodeData" || name == "ElementData" || name == "ElementNodeData") kind_ = Kind::Data;
+    if (name == "InterpolationScheme") kind_ = Kind::Scheme;
+    data_ = DataHeader{};
+    schemeWords_.clear();
     countLine_ = 0;
     count_ = seen_ = 0;
     blocks_ = blocksSeen_ = blockLine_ = blockItems_ = blockLeft_ = itemsSum_ = 0;
@@ -775,6 +782,16 @@ class MshChecker {
     if (!deferred_.empty()) return;
     switch (kind_) {
       case Kind::Other:
+        return;
+      case Kind::Data:
+        return contentData(line, w);
+      case Kind::Scheme:
+        if (countLine_ == 0) {  // the name, read with a 255-byte buffer
+          countLine_ = line_;
+          if (line.size() >= kShortChunk) defer("found a line of " + plural(line.size(), "byte") + " (expected a scheme name of at most 254)");
+          return;
+        }
+        schemeWords_.insert(schemeWords_.end(), w.begin(), w.end());
         return;
       case Kind::Names:
         return contentNames(line, w);
@@ -826,6 +843,7 @@ class MshChecker {
           !parseReal(w[3], x))
         return defer("found " + shown(line) + " (expected a node line '<tag> <x> <y> <z>')");
       nodeTags_.insert(n);
+      maxNodeTag_ = std::max(maxNodeTag_, n);
       return;
     }
     std::vector<long long> v;
@@ -840,6 +858,7 @@ class MshChecker {
                    plural(static_cast<std::size_t>(std::max(given, 0LL)), "node") + " after its " +
                    plural(static_cast<std::size_t>(v[2]), "tag") + " (expected " + std::to_string(nodeCount(*type)) +
                    ")");
+    maxElementTag_ = std::max(maxElementTag_, v[0]);
     checkNodes(w[0], v, static_cast<std::size_t>(3 + v[2]));
   }
 
@@ -891,6 +910,7 @@ class MshChecker {
           return defer("found " + shown(line) + " (expected a node tag of the block at line " +
                        std::to_string(blockLine_) + ")");
         nodeTags_.insert(tag);
+        maxNodeTag_ = std::max(maxNodeTag_, tag);
         return;
       }
       double x = 0;
@@ -905,7 +925,118 @@ class MshChecker {
     if (!parseIntegers(w, v, 1) || static_cast<int>(v.size()) != 1 + nn)
       return defer("found " + shown(line) + " (expected an element tag and " + std::to_string(nn) + " nodes: " +
                    gmshTypeText(blockGmshType_, blockType_) + ", block at line " + std::to_string(blockLine_) + ")");
+    maxElementTag_ = std::max(maxElementTag_, v[0]);
     checkNodes(w[0], v, 1);
+  }
+
+  // $NodeData, $ElementData, $ElementNodeData, read by gmsh's data reader: lines
+  // "<n>" and n string tags, "<n>" and n real tags, "<n>" and n integer tags (time
+  // step, components, entities, ...), each read whole with a 255-byte buffer; then a
+  // line per entity "<tag> [<values per entity>] <values>". gmsh makes a time step
+  // object for each step number up to the one read and sizes its data tables by
+  // the largest entity tag: both are bounded here.
+  void contentData(const std::string& line, const std::vector<std::string>& w) {
+    DataHeader& d = data_;
+    const std::string where = " in $" + section_ + " (line " + std::to_string(sectionLine_) + ")";
+    long long n = 0;
+    double x = 0;
+    if (d.phase < 6 && line.size() >= kShortChunk)
+      return defer("found a header line of " + plural(line.size(), "byte") + where + " (expected at most " +
+                   std::to_string(kShortChunk - 1) + ")");
+    switch (d.phase) {
+      case 0:
+      case 2:
+      case 4: {
+        const char* tags[] = {"string", "", "real", "", "integer"};
+        const long long least = d.phase == 4 ? 3 : 0;
+        if (w.size() != 1 || !parseInteger(w[0], n) || n < least || n > INT32_MAX)
+          return defer("found " + shown(line) + where + " (expected the number of " + tags[d.phase] + " tags" +
+                       (least ? ", 3 or more: time step, components, entities)" : ")"));
+        d.left = n;
+        d.phase = n > 0 ? d.phase + 1 : d.phase + 2;
+        return;
+      }
+      case 1:
+      case 3:
+      case 5:
+        if (d.phase == 3 && (w.size() != 1 || !parseReal(w[0], x)))
+          return defer("found " + shown(line) + where + " (expected a real tag, one number)");
+        if (d.phase == 5) {
+          if (w.size() != 1 || !parseInteger(w[0], n) || n < INT32_MIN || n > INT32_MAX)
+            return defer("found " + shown(line) + where + " (expected an integer tag, one integer)");
+          d.ints.push_back(n);
+        }
+        if (--d.left > 0) return;
+        ++d.phase;
+        if (d.phase == 6) {
+          if (d.ints[0] < 0 || d.ints[0] > kMaxDataStep)
+            return defer("time step " + std::to_string(d.ints[0]) + where + " (expected 0 to " +
+                         std::to_string(kMaxDataStep) + ")");
+          if (d.ints[1] < 1) return defer(std::to_string(d.ints[1]) + " components" + where + " (expected 1 or more)");
+          if (d.ints[2] < 0) return defer(std::to_string(d.ints[2]) + " entities" + where + " (expected 0 or more)");
+          d.left = d.ints[2];
+        }
+        return;
+      default:
+        break;
+    }
+    if (d.left == 0)
+      return defer("found " + shown(line) + where + ", one line more than the " + std::to_string(d.ints[2]) +
+                   " entities announced (expected $End" + section_ + ")");
+    --d.left;
+    const bool nodes = section_ == "NodeData", perNode = section_ == "ElementNodeData";
+    const long long largest = nodes ? maxNodeTag_ : maxElementTag_;
+    const char* entity = nodes ? "node" : "element";
+    long long tag = 0, mult = 1;
+    if (w.empty() || !parseInteger(w[0], tag) || tag < 0 || tag > largest)
+      return defer("found " + shown(line) + where + " (expected a " + entity + " tag 0 to " +
+                   std::to_string(largest) + ", the largest of the file so far, then its values)");
+    if (perNode && (w.size() < 2 || !parseInteger(w[1], mult) || mult < 1 || mult > 27))
+      return defer("found " + shown(line) + where + " (expected an element tag, its number of nodes, 1 to 27, then "
+                   "its values)");
+    const std::size_t first = perNode ? 2 : 1;
+    const long long values = mult * d.ints[1];
+    bool ok = static_cast<long long>(w.size() - first) == values;
+    for (std::size_t k = first; ok && k < w.size(); ++k) ok = parseReal(w[k], x);
+    if (!ok)
+      return defer("found " + shown(line) + where + " (expected " + std::to_string(values) + " numbers after the " +
+                   entity + " tag" + (perNode ? " and its number of nodes)" : ")"));
+  }
+
+  // $InterpolationScheme, read by gmsh's data reader: a name line, then the
+  // numbers "<types>" and per type "<type> <matrices>", per matrix "<m> <n>" and
+  // m n reals, in any line layout. gmsh sizes each matrix as announced.
+  void closeScheme() {
+    const std::string where = "found $EndInterpolationScheme (section at line " + std::to_string(sectionLine_) + ")";
+    std::size_t i = 0;
+    auto integer = [&](const char* what) {
+      long long n = 0;
+      if (!deferred_.empty()) return n;
+      if (i >= schemeWords_.size() || !parseInteger(schemeWords_[i], n) || n < 0 || n > INT32_MAX)
+        defer(where + ": " + (i >= schemeWords_.size() ? "the numbers end" : "found '" + escaped(schemeWords_[i]) + "'") +
+              " where " + what + " is expected (an integer 0 or more)");
+      ++i;
+      return n;
+    };
+    const long long types = integer("the number of element types");
+    for (long long t = 0; t < types && deferred_.empty(); ++t) {
+      integer("an element type");
+      const long long matrices = integer("a number of matrices");
+      for (long long k = 0; k < matrices && deferred_.empty(); ++k) {
+        const long long m = integer("a number of rows"), n = integer("a number of columns");
+        if (!deferred_.empty()) return;
+        const std::size_t left = schemeWords_.size() - i;
+        double x = 0;
+        if (n > 0 && m > static_cast<long long>(left) / n)
+          return defer(where + ": a matrix of " + std::to_string(m) + " x " + std::to_string(n) + " with " +
+                       plural(left, "number") + " left (expected the numbers of the matrices announced)");
+        for (long long v = 0; v < m * n; ++v, ++i)
+          if (!parseReal(schemeWords_[i], x))
+            return defer(where + ": found '" + escaped(schemeWords_[i]) + "' in a matrix (expected a number)");
+      }
+    }
+    if (deferred_.empty() && i < schemeWords_.size())
+      defer(where + ": " + plural(schemeWords_.size() - i, "number") + " more than its matrices hold");
   }
 
   // Nodes of an element line (values from `first` on) against the last $Nodes read.
@@ -920,6 +1051,15 @@ class MshChecker {
 
   void close() {
     if (kind_ == Kind::Other || !deferred_.empty()) return;
+    if (kind_ == Kind::Scheme) return closeScheme();
+    if (kind_ == Kind::Data) {
+      if (data_.phase < 6 || data_.left > 0)
+        defer("found $End" + section_ + " (expected " +
+              (data_.phase < 6 ? std::string("the tags of the section at line ") + std::to_string(sectionLine_)
+                               : plural(static_cast<std::size_t>(data_.left), "more entity line")) +
+              ")");
+      return;
+    }
     const std::string end = "found $End" + section_;
     if (kind_ == Kind::Names) {
       if (countLine_ == 0) return defer(end + " (expected the number of physical names on the line after $PhysicalNames)");
@@ -964,6 +1104,16 @@ class MshChecker {
   // Nodes of the last $Nodes section that was read without error (nodesLine_ > 0).
   std::unordered_set<long long> nodeTags_;
   std::size_t nodesLine_ = 0;
+  long long maxNodeTag_ = 0, maxElementTag_ = 0;  // of the whole file so far
+  // A data section being read: its phase (0 string tag count, 1 string tags, 2 real
+  // count, 3 reals, 4 integer count, 5 integers, 6 entity lines) and what is left.
+  struct DataHeader {
+    int phase = 0;
+    long long left = 0;
+    std::vector<long long> ints;
+  };
+  DataHeader data_;
+  std::vector<std::string> schemeWords_;
 };
 
 }  // namespace
