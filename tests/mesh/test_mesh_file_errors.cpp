@@ -224,6 +224,22 @@ TEST(MshCheck, DataSectionsWithinWhatTheFileHolds) {
                                   "100000 with 0 numbers left (expected the numbers of the matrices announced)");
 }
 
+// MSH 4.0: gmsh allocates the announced number of nodes and elements at once.
+TEST(MshCheck, Version40Blocks) {
+  const std::string header = "$MeshFormat\n4 0 8\n$EndMeshFormat\n";
+  const std::string elements = "$Elements\n1 1\n1 2 2 1\n7 1 2 3\n$EndElements\n";
+  std::string path = writeFile("v40_count.msh", header + "$Nodes\n1 3000000000\n1 2 0 3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
+                                                 "$EndNodes\n" + elements);
+  EXPECT_EQ(gmshError(path), path + ":10: found $EndNodes: the blocks hold 3 nodes (expected 3000000000, as announced at "
+                                    "line 5)");
+  path = writeFile("v40_node.msh", header + "$Nodes\n1 3\n1 2 0 3\n1 0 0 0\n2 1 0\n3 0 1 0\n$EndNodes\n" + elements);
+  EXPECT_EQ(gmshError(path), path + ":8: found '2 1 0' (expected a node line '<tag> <x> <y> <z>', block at line 6)");
+  path = writeFile("v40_element.msh",
+                   header + "$Nodes\n1 3\n1 2 0 3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n$Elements\n1 1\n1 2 2 1\n7 1 2 4\n$EndElements\n");
+  EXPECT_EQ(gmshError(path), path + ":14: element 7 refers to node 4, which is not defined (expected a node of the "
+                                    "$Nodes section at line 4)");
+}
+
 TEST(MshCheck, Version22CountsAndLines) {
   std::string path = writeFile("few_nodes.msh",
                                kHeader22 + "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n" + kElements22);

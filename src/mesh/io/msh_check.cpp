@@ -736,8 +736,8 @@ class MshChecker {
     if (name == "PhysicalNames") kind_ = Kind::Names;
     if (name == "Nodes" && version_ == 22) kind_ = Kind::Nodes22;
     if (name == "Elements" && version_ == 22) kind_ = Kind::Elements22;
-    if (name == "Nodes" && version_ == 41) kind_ = Kind::Nodes41;
-    if (name == "Elements" && version_ == 41) kind_ = Kind::Elements41;
+    if (name == "Nodes" && version_ >= 40) kind_ = Kind::Nodes41;
+    if (name == "Elements" && version_ >= 40) kind_ = Kind::Elements41;
     if (name == "NodeData" || name == "ElementData" || name == "ElementNodeData") kind_ = Kind::Data;
     if (name == "InterpolationScheme") kind_ = Kind::Scheme;
     data_ = DataHeader{};
@@ -864,12 +864,17 @@ class MshChecker {
 
   // MSH 4.1: "<blocks> <count> <min tag> <max tag>", then blocks of
   // "<dim> <entity> <parametric|type> <n>" followed by n lines (2 n for nodes).
+  // MSH 4.0: "<blocks> <count>", block headers "<entity tag> <entity dim> ...",
+  // nodes "<tag> <coordinates>" on one line.
   void content41(const std::string& line, const std::vector<std::string>& w) {
     std::vector<long long> v;
+    const bool v40 = version_ == 40;
+    const std::size_t dim = v40 ? 1 : 0;  // where the entity dimension is in a block header
     if (countLine_ == 0) {
-      if (!parseIntegers(w, v, 4) || w.size() != 4 || v[0] < 0 || v[1] < 0)
+      const std::size_t words = v40 ? 2 : 4;
+      if (!parseIntegers(w, v, words) || w.size() != words || v[0] < 0 || v[1] < 0)
         return defer("found " + shown(line) + " after $" + section_ + " (expected '<blocks> <" + what() +
-                     "s> <min tag> <max tag>')");
+                     (v40 ? "s>')" : "s> <min tag> <max tag>')"));
       countLine_ = line_;
       blocks_ = static_cast<std::size_t>(v[0]);
       count_ = static_cast<std::size_t>(v[1]);
@@ -879,9 +884,9 @@ class MshChecker {
       if (blocksSeen_ == blocks_)
         return defer("found " + shown(line) + " after the " + plural(blocks_, what() + " block") +
                      " announced at line " + std::to_string(countLine_) + " (expected $End" + section_ + ")");
-      const std::string form = nodes() ? "'<entity dim> <entity tag> <parametric> <nodes in block>'"
-                                       : "'<entity dim> <entity tag> <element type> <elements in block>'";
-      if (!parseIntegers(w, v, 4) || w.size() != 4 || v[0] < 0 || v[0] > 3 || v[3] < 0)
+      const std::string entity = v40 ? "'<entity tag> <entity dim>" : "'<entity dim> <entity tag>";
+      const std::string form = entity + (nodes() ? " <parametric> <nodes in block>'" : " <element type> <elements in block>'");
+      if (!parseIntegers(w, v, 4) || w.size() != 4 || v[dim] < 0 || v[dim] > 3 || v[3] < 0)
         return defer("found " + shown(line) + " (expected a " + what() + " block header " + form + ")");
       ++blocksSeen_;
       blockLine_ = line_;
@@ -890,21 +895,37 @@ class MshChecker {
       if (nodes()) {
         if (v[2] != 0 && v[2] != 1)
           return defer("found " + shown(line) + " (expected a node block header " + form + ", parametric 0 or 1)");
-        coordinates_ = 3 + (v[2] == 1 ? static_cast<int>(v[0]) : 0);
-        blockLeft_ = 2 * blockItems_;
+        coordinates_ = 3 + (v[2] == 1 ? static_cast<int>(v[dim]) : 0);
+        blockLeft_ = (v40 ? 1 : 2) * blockItems_;
       } else {
         const auto type = cellTypeOfGmshElement(static_cast<int>(v[2]));
+        blockLeft_ = blockItems_;
+        // MSH 4.0: a type code_aster lacks is left to gmsh and reported after it.
+        anyType_ = v40 && !type;
+        if (anyType_) return;
         if (v[2] != static_cast<int>(v[2]) || !type)
-          return defer("the elements of entity " + w[1] + " (dimension " + w[0] + ") have " + unsupportedType(v[2]));
+          return defer("the elements of entity " + w[1 - dim] + " (dimension " + w[dim] + ") have " +
+                       unsupportedType(v[2]));
         blockType_ = *type;
         blockGmshType_ = static_cast<int>(v[2]);
-        blockLeft_ = blockItems_;
       }
       return;
     }
     --blockLeft_;
     if (nodes()) {
       long long tag = 0;
+      if (v40) {  // "<tag> <coordinates>"
+        double x = 0;
+        bool ok = static_cast<int>(w.size()) == 1 + coordinates_ && parseInteger(w[0], tag) && tag >= 1;
+        for (std::size_t k = 1; ok && k < w.size(); ++k) ok = parseReal(w[k], x);
+        if (!ok)
+          return defer("found " + shown(line) + " (expected a node line '<tag> <x> <y> <z>'" +
+                       (coordinates_ > 3 ? " and its parametric coordinates" : "") + ", block at line " +
+                       std::to_string(blockLine_) + ")");
+        nodeTags_.insert(tag);
+        maxNodeTag_ = std::max(maxNodeTag_, tag);
+        return;
+      }
       if (blockLeft_ >= blockItems_) {  // the tags come first, one per line
         if (w.size() != 1 || !parseInteger(w[0], tag) || tag < 1)
           return defer("found " + shown(line) + " (expected a node tag of the block at line " +
@@ -919,6 +940,13 @@ class MshChecker {
       if (!ok)
         return defer("found " + shown(line) + " (expected " + std::to_string(coordinates_) +
                      " numbers: the coordinates of a node of the block at line " + std::to_string(blockLine_) + ")");
+      return;
+    }
+    if (anyType_) {
+      if (!parseIntegers(w, v, 2))
+        return defer("found " + shown(line) + " (expected an element tag and its nodes, block at line " +
+                     std::to_string(blockLine_) + ")");
+      maxElementTag_ = std::max(maxElementTag_, v[0]);
       return;
     }
     const int nn = nodeCount(blockType_);
@@ -1101,6 +1129,7 @@ class MshChecker {
   int coordinates_ = 3;
   CellType blockType_ = CellType::POI1;
   int blockGmshType_ = 15;
+  bool anyType_ = false;  // an element block of MSH 4.0 of a type code_aster lacks
   // Nodes of the last $Nodes section that was read without error (nodesLine_ > 0).
   std::unordered_set<long long> nodeTags_;
   std::size_t nodesLine_ = 0;

@@ -25,7 +25,10 @@ inline constexpr const char* kMshExpected = "a gmsh .msh file, version 2.2 or 4.
 //    follow, a node line is not "<tag> <x> <y> <z>", an element line is not
 //    "<tag> <type> <ntags> <tags> <nodes>", its type has no code_aster
 //    equivalent, it has the wrong number of nodes or a node that $Nodes lacks;
-//  - (ASCII 4.1) the same for the entity blocks of $Nodes and $Elements;
+//  - (ASCII 4.0 and 4.1) the same for the entity blocks of $Nodes and $Elements;
+//  - (ASCII) $NodeData, $ElementData, $ElementNodeData: their tags, a time step
+//    0 to 100000, entity lines of a tag defined before and its values;
+//    $InterpolationScheme: matrices of the numbers that follow;
 //  - a $PhysicalNames line is not '<dimension> <tag> "<name>"' with dimension 0 to 3;
 //  - (binary, "<path>: byte <offset> (binary section $<name> at byte <offset>): ...")
 //    the file is not 4.1 or 2.2, the integer after the version line is not 1, a
