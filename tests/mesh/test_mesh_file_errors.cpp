@@ -224,6 +224,20 @@ TEST(MshCheck, DataSectionsWithinWhatTheFileHolds) {
                                   "100000 with 0 numbers left (expected the numbers of the matrices announced)");
 }
 
+// ASCII sections gmsh reads trusting their sizes: $Entities (a buffer of 128 bytes
+// per entity announced) is checked by its number of lines, the others are refused.
+TEST(MshCheck, AsciiSectionsGmshSizesByTheirCounts) {
+  const std::string header = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  std::string path = writeFile("entities_count.msh", header + "$Entities\n100000000 0 0 0\n1 0 0 0 0\n$EndEntities\n" +
+                                                         file41().substr(header.size()));
+  EXPECT_EQ(gmshError(path), path + ":7: found $EndEntities after 1 entity line (expected 100000000, as announced at "
+                                    "line 5)");
+  path = writeFile("periodic41.msh", file41() + "$Periodic\n1\n1 1 1\n1000000000000\n$EndPeriodic\n");
+  EXPECT_EQ(gmshError(path), path + ":21: found $Periodic, a section aster-lite does not read and in which gmsh trusts "
+                                    "the sizes it reads (expected $PhysicalNames, $Entities, $Nodes, $Elements and "
+                                    "data sections only)");
+}
+
 // MSH 4.0: gmsh allocates the announced number of nodes and elements at once.
 TEST(MshCheck, Version40Blocks) {
   const std::string header = "$MeshFormat\n4 0 8\n$EndMeshFormat\n";
@@ -315,9 +329,9 @@ TEST(MshCheck, Version41Blocks) {
 }
 
 TEST(MshCheck, GmshFailureKeepsItsMessageAndSaysWhatWasExpected) {
-  // ASCII $Entities are left to gmsh, which finds them wrong.
-  const std::string path = writeFile(
-      "ascii_entities_garbage.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\ngarbage\n$EndEntities\n");
+  // The lines of ASCII $Entities are left to gmsh (their number is checked), which finds them wrong.
+  const std::string path = writeFile("ascii_entities_garbage.msh",
+                                     "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n1 0 0 0\ngarbage\n$EndEntities\n");
   const std::string message = gmshError(path);
   EXPECT_EQ(message.rfind(path + ": gmsh error: ", 0), 0u) << message;
   EXPECT_TRUE(endsWith(message, " (expected a gmsh .msh file, version 2.2 or 4.1)")) << message;

@@ -688,7 +688,7 @@ class MshChecker {
   }
 
  private:
-  enum class Kind { Other, Names, Nodes22, Elements22, Nodes41, Elements41, Data, Scheme };
+  enum class Kind { Other, Names, Nodes22, Elements22, Nodes41, Elements41, Data, Scheme, Entities };
 
   [[noreturn]] void fail(std::size_t line, const std::string& what) const {
     throw Error(path_ + ":" + std::to_string(line) + ": " + what);
@@ -740,6 +740,7 @@ class MshChecker {
     if (name == "Elements" && version_ >= 40) kind_ = Kind::Elements41;
     if (name == "NodeData" || name == "ElementData" || name == "ElementNodeData") kind_ = Kind::Data;
     if (name == "InterpolationScheme") kind_ = Kind::Scheme;
+    if (name == "Entities" && version_ >= 40) kind_ = Kind::Entities;
     data_ = DataHeader{};
     schemeWords_.clear();
     countLine_ = 0;
@@ -770,6 +771,10 @@ class MshChecker {
     if (!as.empty() && as != raw.substr(1))
       fail(line_, "found " + word + ", which gmsh reads as section $" + as +
                       " (it compares the beginnings of section names; expected $" + as + ")");
+    if (version_ >= 40 && (as == "PartitionedEntities" || as == "Periodic" || as == "GhostElements" ||
+                           as == "Parametrizations"))
+      fail(line_, "found " + word + ", a section aster-lite does not read and in which gmsh trusts the sizes it "
+                  "reads (expected $PhysicalNames, $Entities, $Nodes, $Elements and data sections only)");
     if (as == "MeshFormat")
       fail(line_, "found a second section $MeshFormat (expected one: gmsh would read the file type again, and the "
                   "rest of the file as binary if it says so)");
@@ -785,6 +790,21 @@ class MshChecker {
         return;
       case Kind::Data:
         return contentData(line, w);
+      case Kind::Entities: {
+        // "<points> <curves> <surfaces> <volumes>", then a line per entity (left
+        // to gmsh, which sizes a line buffer of 128 bytes per entity announced).
+        std::vector<long long> v;
+        if (countLine_ == 0) {
+          if (!parseIntegers(w, v, 4) || w.size() != 4 || v[0] < 0 || v[1] < 0 || v[2] < 0 || v[3] < 0 ||
+              v[0] + v[1] + v[2] + v[3] > INT32_MAX)
+            return defer("found " + shown(line) + " after $Entities (expected '<points> <curves> <surfaces> <volumes>')");
+          countLine_ = line_;
+          count_ = static_cast<std::size_t>(v[0] + v[1] + v[2] + v[3]);
+          return;
+        }
+        ++seen_;
+        return;
+      }
       case Kind::Scheme:
         if (countLine_ == 0) {  // the name, read with a 255-byte buffer
           countLine_ = line_;
@@ -1080,6 +1100,13 @@ class MshChecker {
   void close() {
     if (kind_ == Kind::Other || !deferred_.empty()) return;
     if (kind_ == Kind::Scheme) return closeScheme();
+    if (kind_ == Kind::Entities) {
+      if (countLine_ == 0) return defer("found $EndEntities (expected the numbers of entities on the line after $Entities)");
+      if (seen_ != count_)
+        defer("found $EndEntities after " + plural(seen_, "entity line") + " (expected " + std::to_string(count_) +
+              ", as announced at line " + std::to_string(countLine_) + ")");
+      return;
+    }
     if (kind_ == Kind::Data) {
       if (data_.phase < 6 || data_.left > 0)
         defer("found $End" + section_ + " (expected " +

@@ -28,7 +28,9 @@ inline constexpr const char* kMshExpected = "a gmsh .msh file, version 2.2 or 4.
 //  - (ASCII 4.0 and 4.1) the same for the entity blocks of $Nodes and $Elements;
 //  - (ASCII) $NodeData, $ElementData, $ElementNodeData: their tags, a time step
 //    0 to 100000, entity lines of a tag defined before and its values;
-//    $InterpolationScheme: matrices of the numbers that follow;
+//    $InterpolationScheme: matrices of the numbers that follow; (ASCII 4.x)
+//    $Entities: as many lines as entities announced; $PartitionedEntities,
+//    $Periodic, $GhostElements, $Parametrizations: refused (gmsh trusts their sizes);
 //  - a $PhysicalNames line is not '<dimension> <tag> "<name>"' with dimension 0 to 3;
 //  - (binary, "<path>: byte <offset> (binary section $<name> at byte <offset>): ...")
 //    the file is not 4.1 or 2.2, the integer after the version line is not 1, a
