@@ -46,10 +46,10 @@ inline constexpr const char* kMshExpected = "a gmsh .msh file, version 2.2 or 4.
 //    starts with '$' (comparing the beginning of the name: "$NodesX" is $Nodes).
 //    Refused: a header line longer than 254 bytes, a '$' after the first byte of
 //    a longer line, a name gmsh reads as another section, a second $MeshFormat
-//    (gmsh reads the file type again), in $Comments a line
-//    "$<name>" of a section gmsh reads; (binary) a section marker not alone on its
-//    chunk (a full 1023-byte chunk is not the end of the file), a chunk
-//    "<byte>End<name>" inside a skipped section $<name> (gmsh ends it there).
+//    (gmsh reads the file type again), in $Comments a line "$<name>" of a section
+//    gmsh reads; (binary) a section marker not alone on its chunk (a full
+//    1023-byte chunk is not the end of the file), a chunk "<byte>End<name>"
+//    inside a skipped section $<name> (gmsh ends it there).
 // Text between sections is skipped, as gmsh does, and so are the other lines of $Comments.
 // A section left open is reported before any error on the lines inside it (a
 // truncated file reads as such, not as a bad last line).
