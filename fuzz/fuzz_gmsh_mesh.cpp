@@ -7,11 +7,13 @@
 // gmsh runs in a child because it is Debian's library, not instrumented: it
 // leaks what it has read when it gives up on a malformed file, which is not a
 // finding; its crashes are (the child dies by a signal and this target aborts),
-// and so is a sanitizer report in the child (it exits with a nonzero status).
+// and so is a sanitizer report in the child (it exits with a nonzero status),
+// or a hang (the child's alarm kills it).
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +24,9 @@
 #include "core/error.hpp"
 #include "mesh/io/gmsh_format.hpp"
 #include "mesh/io/msh_check.hpp"
+
+// The child's time limit, below the -timeout=10 given to libFuzzer (fuzz/CMakeLists.txt).
+constexpr unsigned kChildSeconds = 7;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::string path = "/tmp/aster-fuzz-gmsh-" + std::to_string(::getpid()) + ".msh";
@@ -41,7 +46,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // stderr is kept for sanitizer reports (gmsh prints nothing: General.Terminal = 0).
     const int null = ::open("/dev/null", O_WRONLY);
     if (null >= 0) ::dup2(null, STDOUT_FILENO);
-    ::alarm(20);  // a hang is reported as SIGALRM
+    // libFuzzer's handlers are inherited: a hang must kill the child by SIGALRM
+    // (reported below as signal 14), before libFuzzer's -timeout=10 reports the
+    // parent as hung in waitpid; Ctrl-C is for the parent.
+    std::signal(SIGALRM, SIG_DFL);
+    std::signal(SIGINT, SIG_IGN);
+    ::alarm(kChildSeconds);
     try {
       aster::mesh::readGmshMesh(path);
     } catch (const aster::Error&) {
@@ -50,6 +60,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return 0;
   }
   if (WIFSIGNALED(status) || WEXITSTATUS(status) != 0) {
     std::fprintf(stderr, "fuzz_gmsh_mesh: reading a file that checkMshFile accepted, gmsh %s %d\n",

@@ -161,6 +161,99 @@ TEST(MshCheck, SectionLeftOpenOrClosedWrongly) {
   EXPECT_EQ(gmshError(path), path + ":4: found $EndNodes outside any section (expected $Nodes before it)");
 }
 
+// gmsh reads the lines between sections with fgets, in pieces of at most 254
+// or 1022 bytes, and opens a section at each piece that starts with "$<name>",
+// comparing the beginning of the name only.
+TEST(MshCheck, LinesAsGmshReadsThem) {
+  // A header line longer than gmsh's buffer: its second piece would be the version line.
+  std::string path = writeFile("long_header.msh", "$MeshFormat" + std::string(244, ' ') + "2.2 0 8" + file41().substr(11));
+  EXPECT_EQ(gmshError(path), path + ":1: found a header line of 262 bytes (expected at most 254)");
+
+  // A '$' inside a long line starts a piece that gmsh reads as a section marker.
+  path = writeFile("long_line.msh", kHeader22 + std::string(300, 'x') + "$Nodes\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":4: found a line of 306 bytes with a '$' at column 301 (expected '$' only at the "
+                                 "start of a line longer than 254 bytes: gmsh reads such a line in pieces, and a "
+                                 "piece starting with '$' would open a section)");
+
+  // gmsh's MSH 2 reader opens a section at every '$' line, also in $Comments.
+  path = writeFile("comment_nodes.msh",
+                   kHeader22 + "$Comments\n$Nodes\n1\n1 0 0 nan\n$EndComments\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":5: found $Nodes inside section $Comments opened at line 4 (expected $EndComments "
+                                 "first: gmsh reads $Nodes there)");
+
+  // "$NodesX" is read by gmsh as $Nodes, "$NOD" as the nodes of MSH 1.
+  path = writeFile("nodes_x.msh", kHeader22 + "$NodesX\n1\n1 0 0 nan\n$EndNodesX\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":4: found $NodesX, which gmsh reads as section $Nodes (it compares the beginnings "
+                                 "of section names; expected $Nodes)");
+  // A second $MeshFormat: gmsh reads the file type again (here: the rest is binary).
+  path = writeFile("second_format.msh", kHeader22 + "$MeshFormat\n2.2 1 8\n$EndMeshFormat\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":4: found a second section $MeshFormat (expected one: gmsh would read the file type "
+                                 "again, and the rest of the file as binary if it says so)");
+  path = writeFile("nod.msh", kHeader22 + "$NOD\n1\n1 0 0 nan\n$ENDNOD\n" + kNodes22 + kElements22);
+  EXPECT_EQ(gmshError(path), path +
+                                 ":4: found $NOD, which gmsh reads as section $Nodes (it compares the beginnings of "
+                                 "section names; expected $Nodes)");
+}
+
+// Data sections are read by gmsh's data reader, which trusts the sizes it reads:
+// it sizes a matrix of $InterpolationScheme as announced, makes an object per time
+// step number up to the one read and sizes its tables by the largest entity tag.
+TEST(MshCheck, DataSectionsWithinWhatTheFileHolds) {
+  const auto checkError = [](const std::string& path) { return errorOf([&] { checkMshFile(path); }); };
+  const std::string data = "$NodeData\n1\n\"u\"\n1\n0\n3\n";  // lines 21-26; then the integer tags
+  EXPECT_EQ(readGmshMesh(writeFile("data_ok.msh", file41() + data + "0\n1\n2\n1 0.5\n4 -1\n$EndNodeData\n")).cellCount(), 1);
+
+  std::string path = writeFile("data_tag.msh", file41() + data + "0\n1\n1\n2000000000 0\n$EndNodeData\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":30: found '2000000000 0' in $NodeData (line 21) (expected a node tag 0 to 4, the "
+                                  "largest of the file so far, then its values)");
+  path = writeFile("data_step.msh", file41() + data + "2000000000\n1\n1\n1 0\n$EndNodeData\n");
+  EXPECT_EQ(checkError(path), path + ":29: time step 2000000000 in $NodeData (line 21) (expected 0 to 100000)");
+  path = writeFile("data_short.msh", file41() + data + "0\n3\n2\n1 0 0 0\n2 0 0\n$EndNodeData\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":31: found '2 0 0' in $NodeData (line 21) (expected 3 numbers after the node tag)");
+
+  path = writeFile("scheme.msh", file41() + "$InterpolationScheme\n\"x\"\n1\n3 1\n100000 100000\n$EndInterpolationScheme\n" +
+                                     data + "0\n1\n1\n1 0\n$EndNodeData\n");
+  EXPECT_EQ(checkError(path), path +
+                                  ":26: found $EndInterpolationScheme (section at line 21): a matrix of 100000 x "
+                                  "100000 with 0 numbers left (expected the numbers of the matrices announced)");
+}
+
+// ASCII sections gmsh reads trusting their sizes: $Entities (a buffer of 128 bytes
+// per entity announced) is checked by its number of lines, the others are refused.
+TEST(MshCheck, AsciiSectionsGmshSizesByTheirCounts) {
+  const std::string header = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  std::string path = writeFile("entities_count.msh", header + "$Entities\n100000000 0 0 0\n1 0 0 0 0\n$EndEntities\n" +
+                                                         file41().substr(header.size()));
+  EXPECT_EQ(gmshError(path), path + ":7: found $EndEntities after 1 entity line (expected 100000000, as announced at "
+                                    "line 5)");
+  path = writeFile("periodic41.msh", file41() + "$Periodic\n1\n1 1 1\n1000000000000\n$EndPeriodic\n");
+  EXPECT_EQ(gmshError(path), path + ":21: found $Periodic, a section aster-lite does not read and in which gmsh trusts "
+                                    "the sizes it reads (expected $PhysicalNames, $Entities, $Nodes, $Elements and "
+                                    "data sections only)");
+}
+
+// MSH 4.0: gmsh allocates the announced number of nodes and elements at once.
+TEST(MshCheck, Version40Blocks) {
+  const std::string header = "$MeshFormat\n4 0 8\n$EndMeshFormat\n";
+  const std::string elements = "$Elements\n1 1\n1 2 2 1\n7 1 2 3\n$EndElements\n";
+  std::string path = writeFile("v40_count.msh", header + "$Nodes\n1 3000000000\n1 2 0 3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
+                                                 "$EndNodes\n" + elements);
+  EXPECT_EQ(gmshError(path), path + ":10: found $EndNodes: the blocks hold 3 nodes (expected 3000000000, as announced at "
+                                    "line 5)");
+  path = writeFile("v40_node.msh", header + "$Nodes\n1 3\n1 2 0 3\n1 0 0 0\n2 1 0\n3 0 1 0\n$EndNodes\n" + elements);
+  EXPECT_EQ(gmshError(path), path + ":8: found '2 1 0' (expected a node line '<tag> <x> <y> <z>', block at line 6)");
+  path = writeFile("v40_element.msh",
+                   header + "$Nodes\n1 3\n1 2 0 3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n$Elements\n1 1\n1 2 2 1\n7 1 2 4\n$EndElements\n");
+  EXPECT_EQ(gmshError(path), path + ":14: element 7 refers to node 4, which is not defined (expected a node of the "
+                                    "$Nodes section at line 4)");
+}
+
 TEST(MshCheck, Version22CountsAndLines) {
   std::string path = writeFile("few_nodes.msh",
                                kHeader22 + "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n" + kElements22);
@@ -236,9 +329,9 @@ TEST(MshCheck, Version41Blocks) {
 }
 
 TEST(MshCheck, GmshFailureKeepsItsMessageAndSaysWhatWasExpected) {
-  // ASCII $Entities are left to gmsh, which finds them wrong.
-  const std::string path = writeFile(
-      "ascii_entities_garbage.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\ngarbage\n$EndEntities\n");
+  // The lines of ASCII $Entities are left to gmsh (their number is checked), which finds them wrong.
+  const std::string path = writeFile("ascii_entities_garbage.msh",
+                                     "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n1 0 0 0\ngarbage\n$EndEntities\n");
   const std::string message = gmshError(path);
   EXPECT_EQ(message.rfind(path + ": gmsh error: ", 0), 0u) << message;
   EXPECT_TRUE(endsWith(message, " (expected a gmsh .msh file, version 2.2 or 4.1)")) << message;

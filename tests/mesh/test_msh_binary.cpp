@@ -277,3 +277,49 @@ TEST(MshBinary, FramingAndSections) {
                                "a binary file of MSH version 4.0 (expected version 4.1 or 2.2 for a binary file; gmsh "
                                "reads 4.0 in ASCII only)");
 }
+
+// The file is framed as gmsh frames it: in chunks of at most 1023 bytes (255 for
+// MSH 2.2), each a line or a piece of a longer line; a chunk that starts with '$'
+// opens a section, wherever it lies.
+TEST(MshBinary, ChunksAsGmshReadsThem) {
+  const std::string header = "$MeshFormat\n4.1 1 8\n" + std::string("\x01\0\0\0", 4) + "\n$EndMeshFormat\n";
+  // "$Entities" and binary counts on one 1023-byte chunk: gmsh compares the
+  // beginning of the chunk with "$Entities" and reads counts after it.
+  const std::size_t entitiesAt = header.size();
+  std::string path = writeFile("long_chunk.msh", header + "$Entities" + std::string(1014, '\x01') + "\n");
+  std::string cut;
+  for (int k = 0; k < 51; ++k) cut += "\\x01";
+  EXPECT_EQ(errorOf(path), at(path, entitiesAt, "Entities", entitiesAt) + "found '$Entities" + cut +
+                               "...' (expected a section marker '$Name' alone on its line)");
+
+  // Text of 1030 bytes between sections: its second chunk starts with '$'.
+  File41 t;
+  t.extra = std::string(1023, 'x') + "$Periodic\n1\n$EndPeriodic\n";
+  path = writeFile("long_text.msh", t.bytes());
+  const std::size_t periodicAt = t.bytes().size() - t.extra.size() + 1023;
+  EXPECT_EQ(errorOf(path), at(path, periodicAt, "Periodic", periodicAt) +
+                               "aster-lite does not read section $Periodic in a binary file (expected the sections "
+                               "$PhysicalNames, $Entities, $Nodes and $Elements only; save the mesh as ASCII to keep "
+                               "the others)");
+  // The same text with a newline is skipped, and a last line without newline ends the file.
+  t.extra = std::string(1023, 'x') + "\n$Comments\n" + std::string(2000, 'y') + "\n$EndComments\nlast";
+  EXPECT_EQ(errorOf(writeFile("long_text_ok.msh", t.bytes())), "no error");
+
+  // gmsh ends a section it skips at a chunk "<any byte>End<name>" and the
+  // marker's trailer, not only at "$End<name>".
+  File41 c;
+  c.extra = "$Comments\nxEndComments\n$EndComments\n";
+  path = writeFile("comments_x_end.msh", c.bytes());
+  const std::size_t xAt = c.bytes().size() - c.extra.size() + 10;
+  EXPECT_EQ(errorOf(path), at(path, xAt, "Comments", xAt - 10) +
+                               "found 'xEndComments' inside section $Comments, which ends the section for gmsh "
+                               "(expected $EndComments)");
+
+  // A section name is printable: gmsh would cut it at a zero byte.
+  File41 z;
+  z.extra = std::string("$Foo\x01\n$EndFoo\x01\n");
+  path = writeFile("name_control.msh", z.bytes());
+  const std::size_t fooAt = z.bytes().size() - z.extra.size();
+  EXPECT_EQ(errorOf(path), at(path, fooAt, "Foo", fooAt) +
+                               "found '$Foo\\x01' (expected a section marker '$Name' alone on its line)");
+}

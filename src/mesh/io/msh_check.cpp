@@ -125,6 +125,49 @@ std::string physicalNameError(const std::string& text) {
   return "";
 }
 
+// The section gmsh reads where a line starts with "$<name>": it compares the
+// beginnings of names only ("$NodesX" is read as $Nodes), in this order, in its
+// mesh readers and, when the file holds post-processing data, in its data
+// reader. "" when gmsh skips the section.
+std::string sectionReadByGmsh(int version, const std::string& name) {
+  struct Prefix {
+    const char* prefix;
+    const char* section;
+  };
+  static const Prefix k4[] = {{"MeshFormat", "MeshFormat"},
+                              {"PhysicalNames", "PhysicalNames"},
+                              {"Entities", "Entities"},
+                              {"PartitionedEntities", "PartitionedEntities"},
+                              {"Nodes", "Nodes"},
+                              {"Elements", "Elements"},
+                              {"Periodic", "Periodic"},
+                              {"GhostElements", "GhostElements"},
+                              {"Parametrizations", "Parametrizations"},
+                              {"NodeData", "NodeData"},
+                              {"ElementData", "ElementData"},
+                              {"ElementNodeData", "ElementNodeData"},
+                              {"InterpolationScheme", "InterpolationScheme"}};
+  static const Prefix k22[] = {{"MeshFormat", "MeshFormat"}, {"PhysicalNames", "PhysicalNames"},
+                               {"NO", "Nodes"},              {"Nodes", "Nodes"},
+                               {"ParametricNodes", "ParametricNodes"}, {"ELM", "Elements"},
+                               {"Elements", "Elements"},     {"Periodic", "Periodic"},
+                               {"NodeData", "NodeData"},     {"ElementData", "ElementData"},
+                               {"ElementNodeData", "ElementNodeData"}, {"InterpolationScheme", "InterpolationScheme"}};
+  const auto read = [&](const auto& table) -> std::string {
+    for (const auto& p : table)
+      if (name.rfind(p.prefix, 0) == 0) return p.section;
+    return "";
+  };
+  return version == 22 ? read(k22) : read(k4);
+}
+
+// gmsh's line buffers: fgets reads at most 1022 bytes and the newline in its MSH 4
+// reader, 254 and the newline in its MSH 2 reader and in its data reader.
+constexpr std::size_t kShortChunk = 255, kLongChunk = 1023;
+// The largest time step of a data section ($NodeData...): gmsh makes an object for
+// each time step number up to the one it reads.
+constexpr long long kMaxDataStep = 100000;
+
 // A binary .msh file (file type 1), checked in full before gmsh reads it:
 // gmsh's binary readers trust every count, tag and size they read (a block
 // longer than its section's count overruns their arrays, an unknown element
@@ -163,8 +206,11 @@ class BinaryMshChecker {
     for (;;) {
       const std::uint64_t at = pos_;
       std::string chunk;
-      // gmsh stops at the end of the file, also on a last line without newline.
-      if (!nextChunk(chunk) || chunk.back() != '\n') break;
+      if (!nextChunk(chunk)) break;
+      // gmsh stops when fgets meets the end of the file: on a last line without
+      // newline shorter than its buffer. A full chunk without newline is not the
+      // end: gmsh reads the next chunk where this one stops.
+      if (chunk.back() != '\n' && pos_ == size_ && chunk.size() < chunkSize()) break;
       if (chunk[0] == '$') section(chunk, at);  // other text between sections: gmsh skips it
     }
   }
@@ -175,10 +221,12 @@ class BinaryMshChecker {
                 std::to_string(sectionAt_) + "): " + what);
   }
 
+  std::size_t chunkSize() const { return version_ == 41 ? kLongChunk : kShortChunk; }
+
   // One line as gmsh's fgets reads it: up to and with '\n', at most 1023 bytes (255 for MSH 2.2).
   bool nextChunk(std::string& chunk) {
     chunk.clear();
-    const std::size_t max = version_ == 41 ? 1023 : 255;
+    const std::size_t max = chunkSize();
     char c = 0;
     while (chunk.size() < max && pos_ < size_ && in_.get(c)) {
       ++pos_;
@@ -232,8 +280,9 @@ class BinaryMshChecker {
   }
 
   void section(const std::string& chunk, std::uint64_t at) {
+    // The name: printable characters (gmsh would cut a name at a zero byte).
     std::size_t end = 1;
-    while (end < chunk.size() && !isBlank(chunk[end])) ++end;
+    while (end < chunk.size() && chunk[end] > ' ' && chunk[end] < 127) ++end;
     const std::string name = chunk.substr(1, end - 1);
     section_ = name;
     sectionAt_ = at;
@@ -257,35 +306,28 @@ class BinaryMshChecker {
       version_ == 41 ? elements41() : elements22();
       distinct(elements_, "element");
       endSection("the elements announced");
-    } else if (readByGmsh(name)) {
+    } else if (!sectionReadByGmsh(version_, name).empty()) {
       fail(at, std::string("aster-lite does not read section $") + name + " in a binary file (expected the sections " +
                    (version_ == 41 ? "$PhysicalNames, $Entities, $Nodes and $Elements" : "$PhysicalNames, $Nodes and $Elements") +
                    " only; save the mesh as ASCII to keep the others)");
     } else {
-      // A section gmsh does not know: it skips its lines up to "$End<name>".
+      // A section gmsh does not know: it skips chunks up to one whose text after
+      // the first byte starts with "End<name>" and the opening marker's trailer.
+      const std::string end = "End" + name + sectionTrailer_;
       std::string line;
       for (;;) {
         const std::uint64_t lineAt = pos_;
         if (!nextChunk(line))
           fail(lineAt, "the file ends inside section $" + name + " (expected $End" + name + "; truncated file?)");
+        if (line[0] != '$' && line.compare(1, end.size(), end) == 0)
+          fail(lineAt, "found " + shown(line) + " inside section $" + name + ", which ends the section for gmsh " +
+                           "(expected $End" + name + ")");
         if (line[0] != '$') continue;
         if (line != "$End" + name + sectionTrailer_ && !(pos_ == size_ && isEndAtEof(line)))
           fail(lineAt, "found " + shown(line) + " inside section $" + name + " (expected $End" + name + " first)");
         break;
       }
     }
-  }
-
-  // Section names gmsh reads (it compares their beginnings only).
-  bool readByGmsh(const std::string& name) const {
-    static const char* const k41[] = {"MeshFormat", "PhysicalNames", "Entities",   "PartitionedEntities",
-                                      "Nodes",      "Elements",      "Periodic",   "GhostElements",
-                                      "Parametrizations", "NodeData", "ElementData", "ElementNodeData"};
-    static const char* const k22[] = {"MeshFormat", "PhysicalNames", "NO", "Nodes", "ParametricNodes", "ELM",
-                                      "Elements", "Periodic", "NodeData", "ElementData", "ElementNodeData"};
-    auto matches = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
-    return version_ == 41 ? std::any_of(std::begin(k41), std::end(k41), matches)
-                          : std::any_of(std::begin(k22), std::end(k22), matches);
   }
 
   bool isEndAtEof(const std::string& line) const {
@@ -595,10 +637,12 @@ class MshChecker {
       fail(1, "found blanks before $MeshFormat (expected $MeshFormat at the start of the first line of " +
                   std::string(kMshExpected) + ")");
     const std::string firstLine = line;
+    headerLength(line);
     const char* headerForm = "'<version> <file-type> <data-size>', e.g. '4.1 0 8'";
     if (!std::getline(in, line))
       fail(line_, std::string("the file ends after $MeshFormat (expected ") + headerForm + ")");
     ++line_;
+    headerLength(line);
     const auto words = splitWords(line);
     double version = 0;
     long long fileType = 0, dataSize = 0;
@@ -625,9 +669,12 @@ class MshChecker {
     open("MeshFormat", first);
     while (std::getline(in, line)) {
       ++line_;
+      pieces(line);
       const auto w = splitWords(line);
       if (w.empty()) continue;
-      if (w[0][0] == '$' && !(section_ == "Comments" && w[0] != "$EndComments")) {
+      if (w[0][0] == '$' && section_ == "Comments" && w[0] != "$EndComments") {
+        comment(w[0]);
+      } else if (w[0][0] == '$') {
         marker(w[0]);
       } else if (!section_.empty()) {
         content(line, w);
@@ -641,10 +688,41 @@ class MshChecker {
   }
 
  private:
-  enum class Kind { Other, Names, Nodes22, Elements22, Nodes41, Elements41 };
+  enum class Kind { Other, Names, Nodes22, Elements22, Nodes41, Elements41, Data, Scheme, Entities };
 
   [[noreturn]] void fail(std::size_t line, const std::string& what) const {
     throw Error(path_ + ":" + std::to_string(line) + ": " + what);
+  }
+
+  // gmsh reads the two header lines with buffers of 255 bytes: a longer line
+  // would be read in pieces, the next piece as the version line.
+  void headerLength(const std::string& line) const {
+    if (line.size() >= kShortChunk)
+      fail(line_, "found a header line of " + plural(line.size(), "byte") + " (expected at most " +
+                      std::to_string(kShortChunk - 1) + ")");
+  }
+
+  // gmsh reads a line longer than its buffer in pieces (of 255 or 1023 bytes),
+  // and a piece that starts with '$' is a section marker to it: such a line may
+  // hold '$' only as its first byte.
+  void pieces(const std::string& line) const {
+    if (line.size() < kShortChunk) return;
+    const std::size_t dollar = line.find('$', 1);
+    if (dollar != std::string::npos)
+      fail(line_, "found a line of " + plural(line.size(), "byte") + " with a '$' at column " +
+                      std::to_string(dollar + 1) + " (expected '$' only at the start of a line longer than " +
+                      std::to_string(kShortChunk - 1) + " bytes: gmsh reads such a line in pieces, and a piece "
+                      "starting with '$' would open a section)");
+  }
+
+  // A '$' line inside $Comments: text, unless gmsh reads a section of its name
+  // there (its MSH 2 reader does not skip comments; its data reader neither).
+  void comment(const std::string& raw) const {
+    const std::string as = sectionReadByGmsh(version_, raw.substr(1));
+    if (!as.empty())
+      fail(line_, "found " + escaped(raw) + " inside section $Comments opened at line " +
+                      std::to_string(sectionLine_) + " (expected $EndComments first: gmsh reads $" + as +
+                      " there)");
   }
   // An error on a line inside a section: reported when the structure is sound.
   void defer(const std::string& what) {
@@ -658,8 +736,13 @@ class MshChecker {
     if (name == "PhysicalNames") kind_ = Kind::Names;
     if (name == "Nodes" && version_ == 22) kind_ = Kind::Nodes22;
     if (name == "Elements" && version_ == 22) kind_ = Kind::Elements22;
-    if (name == "Nodes" && version_ == 41) kind_ = Kind::Nodes41;
-    if (name == "Elements" && version_ == 41) kind_ = Kind::Elements41;
+    if (name == "Nodes" && version_ >= 40) kind_ = Kind::Nodes41;
+    if (name == "Elements" && version_ >= 40) kind_ = Kind::Elements41;
+    if (name == "NodeData" || name == "ElementData" || name == "ElementNodeData") kind_ = Kind::Data;
+    if (name == "InterpolationScheme") kind_ = Kind::Scheme;
+    if (name == "Entities" && version_ >= 40) kind_ = Kind::Entities;
+    data_ = DataHeader{};
+    schemeWords_.clear();
     countLine_ = 0;
     count_ = seen_ = 0;
     blocks_ = blocksSeen_ = blockLine_ = blockItems_ = blockLeft_ = itemsSum_ = 0;
@@ -684,6 +767,17 @@ class MshChecker {
     if (!section_.empty())
       fail(line_, "found " + word + " inside section $" + section_ + " opened at line " + std::to_string(sectionLine_) +
                       " (expected $End" + section_ + " first; truncated section?)");
+    const std::string as = sectionReadByGmsh(version_, raw.substr(1));
+    if (!as.empty() && as != raw.substr(1))
+      fail(line_, "found " + word + ", which gmsh reads as section $" + as +
+                      " (it compares the beginnings of section names; expected $" + as + ")");
+    if (version_ >= 40 && (as == "PartitionedEntities" || as == "Periodic" || as == "GhostElements" ||
+                           as == "Parametrizations"))
+      fail(line_, "found " + word + ", a section aster-lite does not read and in which gmsh trusts the sizes it "
+                  "reads (expected $PhysicalNames, $Entities, $Nodes, $Elements and data sections only)");
+    if (as == "MeshFormat")
+      fail(line_, "found a second section $MeshFormat (expected one: gmsh would read the file type again, and the "
+                  "rest of the file as binary if it says so)");
     open(word.substr(1), line_);
   }
 
@@ -693,6 +787,31 @@ class MshChecker {
     if (!deferred_.empty()) return;
     switch (kind_) {
       case Kind::Other:
+        return;
+      case Kind::Data:
+        return contentData(line, w);
+      case Kind::Entities: {
+        // "<points> <curves> <surfaces> <volumes>", then a line per entity (left
+        // to gmsh, which sizes a line buffer of 128 bytes per entity announced).
+        std::vector<long long> v;
+        if (countLine_ == 0) {
+          if (!parseIntegers(w, v, 4) || w.size() != 4 || v[0] < 0 || v[1] < 0 || v[2] < 0 || v[3] < 0 ||
+              v[0] + v[1] + v[2] + v[3] > INT32_MAX)
+            return defer("found " + shown(line) + " after $Entities (expected '<points> <curves> <surfaces> <volumes>')");
+          countLine_ = line_;
+          count_ = static_cast<std::size_t>(v[0] + v[1] + v[2] + v[3]);
+          return;
+        }
+        ++seen_;
+        return;
+      }
+      case Kind::Scheme:
+        if (countLine_ == 0) {  // the name, read with a 255-byte buffer
+          countLine_ = line_;
+          if (line.size() >= kShortChunk) defer("found a line of " + plural(line.size(), "byte") + " (expected a scheme name of at most 254)");
+          return;
+        }
+        schemeWords_.insert(schemeWords_.end(), w.begin(), w.end());
         return;
       case Kind::Names:
         return contentNames(line, w);
@@ -744,6 +863,7 @@ class MshChecker {
           !parseReal(w[3], x))
         return defer("found " + shown(line) + " (expected a node line '<tag> <x> <y> <z>')");
       nodeTags_.insert(n);
+      maxNodeTag_ = std::max(maxNodeTag_, n);
       return;
     }
     std::vector<long long> v;
@@ -758,17 +878,23 @@ class MshChecker {
                    plural(static_cast<std::size_t>(std::max(given, 0LL)), "node") + " after its " +
                    plural(static_cast<std::size_t>(v[2]), "tag") + " (expected " + std::to_string(nodeCount(*type)) +
                    ")");
+    maxElementTag_ = std::max(maxElementTag_, v[0]);
     checkNodes(w[0], v, static_cast<std::size_t>(3 + v[2]));
   }
 
   // MSH 4.1: "<blocks> <count> <min tag> <max tag>", then blocks of
   // "<dim> <entity> <parametric|type> <n>" followed by n lines (2 n for nodes).
+  // MSH 4.0: "<blocks> <count>", block headers "<entity tag> <entity dim> ...",
+  // nodes "<tag> <coordinates>" on one line.
   void content41(const std::string& line, const std::vector<std::string>& w) {
     std::vector<long long> v;
+    const bool v40 = version_ == 40;
+    const std::size_t dim = v40 ? 1 : 0;  // where the entity dimension is in a block header
     if (countLine_ == 0) {
-      if (!parseIntegers(w, v, 4) || w.size() != 4 || v[0] < 0 || v[1] < 0)
+      const std::size_t words = v40 ? 2 : 4;
+      if (!parseIntegers(w, v, words) || w.size() != words || v[0] < 0 || v[1] < 0)
         return defer("found " + shown(line) + " after $" + section_ + " (expected '<blocks> <" + what() +
-                     "s> <min tag> <max tag>')");
+                     (v40 ? "s>')" : "s> <min tag> <max tag>')"));
       countLine_ = line_;
       blocks_ = static_cast<std::size_t>(v[0]);
       count_ = static_cast<std::size_t>(v[1]);
@@ -778,9 +904,9 @@ class MshChecker {
       if (blocksSeen_ == blocks_)
         return defer("found " + shown(line) + " after the " + plural(blocks_, what() + " block") +
                      " announced at line " + std::to_string(countLine_) + " (expected $End" + section_ + ")");
-      const std::string form = nodes() ? "'<entity dim> <entity tag> <parametric> <nodes in block>'"
-                                       : "'<entity dim> <entity tag> <element type> <elements in block>'";
-      if (!parseIntegers(w, v, 4) || w.size() != 4 || v[0] < 0 || v[0] > 3 || v[3] < 0)
+      const std::string entity = v40 ? "'<entity tag> <entity dim>" : "'<entity dim> <entity tag>";
+      const std::string form = entity + (nodes() ? " <parametric> <nodes in block>'" : " <element type> <elements in block>'");
+      if (!parseIntegers(w, v, 4) || w.size() != 4 || v[dim] < 0 || v[dim] > 3 || v[3] < 0)
         return defer("found " + shown(line) + " (expected a " + what() + " block header " + form + ")");
       ++blocksSeen_;
       blockLine_ = line_;
@@ -789,26 +915,43 @@ class MshChecker {
       if (nodes()) {
         if (v[2] != 0 && v[2] != 1)
           return defer("found " + shown(line) + " (expected a node block header " + form + ", parametric 0 or 1)");
-        coordinates_ = 3 + (v[2] == 1 ? static_cast<int>(v[0]) : 0);
-        blockLeft_ = 2 * blockItems_;
+        coordinates_ = 3 + (v[2] == 1 ? static_cast<int>(v[dim]) : 0);
+        blockLeft_ = (v40 ? 1 : 2) * blockItems_;
       } else {
         const auto type = cellTypeOfGmshElement(static_cast<int>(v[2]));
+        blockLeft_ = blockItems_;
+        // MSH 4.0: a type code_aster lacks is left to gmsh and reported after it.
+        anyType_ = v40 && !type;
+        if (anyType_) return;
         if (v[2] != static_cast<int>(v[2]) || !type)
-          return defer("the elements of entity " + w[1] + " (dimension " + w[0] + ") have " + unsupportedType(v[2]));
+          return defer("the elements of entity " + w[1 - dim] + " (dimension " + w[dim] + ") have " +
+                       unsupportedType(v[2]));
         blockType_ = *type;
         blockGmshType_ = static_cast<int>(v[2]);
-        blockLeft_ = blockItems_;
       }
       return;
     }
     --blockLeft_;
     if (nodes()) {
       long long tag = 0;
+      if (v40) {  // "<tag> <coordinates>"
+        double x = 0;
+        bool ok = static_cast<int>(w.size()) == 1 + coordinates_ && parseInteger(w[0], tag) && tag >= 1;
+        for (std::size_t k = 1; ok && k < w.size(); ++k) ok = parseReal(w[k], x);
+        if (!ok)
+          return defer("found " + shown(line) + " (expected a node line '<tag> <x> <y> <z>'" +
+                       (coordinates_ > 3 ? " and its parametric coordinates" : "") + ", block at line " +
+                       std::to_string(blockLine_) + ")");
+        nodeTags_.insert(tag);
+        maxNodeTag_ = std::max(maxNodeTag_, tag);
+        return;
+      }
       if (blockLeft_ >= blockItems_) {  // the tags come first, one per line
         if (w.size() != 1 || !parseInteger(w[0], tag) || tag < 1)
           return defer("found " + shown(line) + " (expected a node tag of the block at line " +
                        std::to_string(blockLine_) + ")");
         nodeTags_.insert(tag);
+        maxNodeTag_ = std::max(maxNodeTag_, tag);
         return;
       }
       double x = 0;
@@ -819,11 +962,129 @@ class MshChecker {
                      " numbers: the coordinates of a node of the block at line " + std::to_string(blockLine_) + ")");
       return;
     }
+    if (anyType_) {
+      if (!parseIntegers(w, v, 2))
+        return defer("found " + shown(line) + " (expected an element tag and its nodes, block at line " +
+                     std::to_string(blockLine_) + ")");
+      maxElementTag_ = std::max(maxElementTag_, v[0]);
+      return;
+    }
     const int nn = nodeCount(blockType_);
     if (!parseIntegers(w, v, 1) || static_cast<int>(v.size()) != 1 + nn)
       return defer("found " + shown(line) + " (expected an element tag and " + std::to_string(nn) + " nodes: " +
                    gmshTypeText(blockGmshType_, blockType_) + ", block at line " + std::to_string(blockLine_) + ")");
+    maxElementTag_ = std::max(maxElementTag_, v[0]);
     checkNodes(w[0], v, 1);
+  }
+
+  // $NodeData, $ElementData, $ElementNodeData, read by gmsh's data reader: lines
+  // "<n>" and n string tags, "<n>" and n real tags, "<n>" and n integer tags (time
+  // step, components, entities, ...), each read whole with a 255-byte buffer; then a
+  // line per entity "<tag> [<values per entity>] <values>". gmsh makes a time step
+  // object for each step number up to the one read and sizes its data tables by
+  // the largest entity tag: both are bounded here.
+  void contentData(const std::string& line, const std::vector<std::string>& w) {
+    DataHeader& d = data_;
+    const std::string where = " in $" + section_ + " (line " + std::to_string(sectionLine_) + ")";
+    long long n = 0;
+    double x = 0;
+    if (d.phase < 6 && line.size() >= kShortChunk)
+      return defer("found a header line of " + plural(line.size(), "byte") + where + " (expected at most " +
+                   std::to_string(kShortChunk - 1) + ")");
+    switch (d.phase) {
+      case 0:
+      case 2:
+      case 4: {
+        const char* tags[] = {"string", "", "real", "", "integer"};
+        const long long least = d.phase == 4 ? 3 : 0;
+        if (w.size() != 1 || !parseInteger(w[0], n) || n < least || n > INT32_MAX)
+          return defer("found " + shown(line) + where + " (expected the number of " + tags[d.phase] + " tags" +
+                       (least ? ", 3 or more: time step, components, entities)" : ")"));
+        d.left = n;
+        d.phase = n > 0 ? d.phase + 1 : d.phase + 2;
+        return;
+      }
+      case 1:
+      case 3:
+      case 5:
+        if (d.phase == 3 && (w.size() != 1 || !parseReal(w[0], x)))
+          return defer("found " + shown(line) + where + " (expected a real tag, one number)");
+        if (d.phase == 5) {
+          if (w.size() != 1 || !parseInteger(w[0], n) || n < INT32_MIN || n > INT32_MAX)
+            return defer("found " + shown(line) + where + " (expected an integer tag, one integer)");
+          d.ints.push_back(n);
+        }
+        if (--d.left > 0) return;
+        ++d.phase;
+        if (d.phase == 6) {
+          if (d.ints[0] < 0 || d.ints[0] > kMaxDataStep)
+            return defer("time step " + std::to_string(d.ints[0]) + where + " (expected 0 to " +
+                         std::to_string(kMaxDataStep) + ")");
+          if (d.ints[1] < 1) return defer(std::to_string(d.ints[1]) + " components" + where + " (expected 1 or more)");
+          if (d.ints[2] < 0) return defer(std::to_string(d.ints[2]) + " entities" + where + " (expected 0 or more)");
+          d.left = d.ints[2];
+        }
+        return;
+      default:
+        break;
+    }
+    if (d.left == 0)
+      return defer("found " + shown(line) + where + ", one line more than the " + std::to_string(d.ints[2]) +
+                   " entities announced (expected $End" + section_ + ")");
+    --d.left;
+    const bool nodes = section_ == "NodeData", perNode = section_ == "ElementNodeData";
+    const long long largest = nodes ? maxNodeTag_ : maxElementTag_;
+    const char* entity = nodes ? "node" : "element";
+    long long tag = 0, mult = 1;
+    if (w.empty() || !parseInteger(w[0], tag) || tag < 0 || tag > largest)
+      return defer("found " + shown(line) + where + " (expected a " + entity + " tag 0 to " +
+                   std::to_string(largest) + ", the largest of the file so far, then its values)");
+    if (perNode && (w.size() < 2 || !parseInteger(w[1], mult) || mult < 1 || mult > 27))
+      return defer("found " + shown(line) + where + " (expected an element tag, its number of nodes, 1 to 27, then "
+                   "its values)");
+    const std::size_t first = perNode ? 2 : 1;
+    const long long values = mult * d.ints[1];
+    bool ok = static_cast<long long>(w.size() - first) == values;
+    for (std::size_t k = first; ok && k < w.size(); ++k) ok = parseReal(w[k], x);
+    if (!ok)
+      return defer("found " + shown(line) + where + " (expected " + std::to_string(values) + " numbers after the " +
+                   entity + " tag" + (perNode ? " and its number of nodes)" : ")"));
+  }
+
+  // $InterpolationScheme, read by gmsh's data reader: a name line, then the
+  // numbers "<types>" and per type "<type> <matrices>", per matrix "<m> <n>" and
+  // m n reals, in any line layout. gmsh sizes each matrix as announced.
+  void closeScheme() {
+    const std::string where = "found $EndInterpolationScheme (section at line " + std::to_string(sectionLine_) + ")";
+    std::size_t i = 0;
+    auto integer = [&](const char* what) {
+      long long n = 0;
+      if (!deferred_.empty()) return n;
+      if (i >= schemeWords_.size() || !parseInteger(schemeWords_[i], n) || n < 0 || n > INT32_MAX)
+        defer(where + ": " + (i >= schemeWords_.size() ? "the numbers end" : "found '" + escaped(schemeWords_[i]) + "'") +
+              " where " + what + " is expected (an integer 0 or more)");
+      ++i;
+      return n;
+    };
+    const long long types = integer("the number of element types");
+    for (long long t = 0; t < types && deferred_.empty(); ++t) {
+      integer("an element type");
+      const long long matrices = integer("a number of matrices");
+      for (long long k = 0; k < matrices && deferred_.empty(); ++k) {
+        const long long m = integer("a number of rows"), n = integer("a number of columns");
+        if (!deferred_.empty()) return;
+        const std::size_t left = schemeWords_.size() - i;
+        double x = 0;
+        if (n > 0 && m > static_cast<long long>(left) / n)
+          return defer(where + ": a matrix of " + std::to_string(m) + " x " + std::to_string(n) + " with " +
+                       plural(left, "number") + " left (expected the numbers of the matrices announced)");
+        for (long long v = 0; v < m * n; ++v, ++i)
+          if (!parseReal(schemeWords_[i], x))
+            return defer(where + ": found '" + escaped(schemeWords_[i]) + "' in a matrix (expected a number)");
+      }
+    }
+    if (deferred_.empty() && i < schemeWords_.size())
+      defer(where + ": " + plural(schemeWords_.size() - i, "number") + " more than its matrices hold");
   }
 
   // Nodes of an element line (values from `first` on) against the last $Nodes read.
@@ -838,6 +1099,22 @@ class MshChecker {
 
   void close() {
     if (kind_ == Kind::Other || !deferred_.empty()) return;
+    if (kind_ == Kind::Scheme) return closeScheme();
+    if (kind_ == Kind::Entities) {
+      if (countLine_ == 0) return defer("found $EndEntities (expected the numbers of entities on the line after $Entities)");
+      if (seen_ != count_)
+        defer("found $EndEntities after " + plural(seen_, "entity line") + " (expected " + std::to_string(count_) +
+              ", as announced at line " + std::to_string(countLine_) + ")");
+      return;
+    }
+    if (kind_ == Kind::Data) {
+      if (data_.phase < 6 || data_.left > 0)
+        defer("found $End" + section_ + " (expected " +
+              (data_.phase < 6 ? std::string("the tags of the section at line ") + std::to_string(sectionLine_)
+                               : plural(static_cast<std::size_t>(data_.left), "more entity line")) +
+              ")");
+      return;
+    }
     const std::string end = "found $End" + section_;
     if (kind_ == Kind::Names) {
       if (countLine_ == 0) return defer(end + " (expected the number of physical names on the line after $PhysicalNames)");
@@ -879,9 +1156,20 @@ class MshChecker {
   int coordinates_ = 3;
   CellType blockType_ = CellType::POI1;
   int blockGmshType_ = 15;
+  bool anyType_ = false;  // an element block of MSH 4.0 of a type code_aster lacks
   // Nodes of the last $Nodes section that was read without error (nodesLine_ > 0).
   std::unordered_set<long long> nodeTags_;
   std::size_t nodesLine_ = 0;
+  long long maxNodeTag_ = 0, maxElementTag_ = 0;  // of the whole file so far
+  // A data section being read: its phase (0 string tag count, 1 string tags, 2 real
+  // count, 3 reals, 4 integer count, 5 integers, 6 entity lines) and what is left.
+  struct DataHeader {
+    int phase = 0;
+    long long left = 0;
+    std::vector<long long> ints;
+  };
+  DataHeader data_;
+  std::vector<std::string> schemeWords_;
 };
 
 }  // namespace

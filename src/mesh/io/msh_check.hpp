@@ -25,7 +25,12 @@ inline constexpr const char* kMshExpected = "a gmsh .msh file, version 2.2 or 4.
 //    follow, a node line is not "<tag> <x> <y> <z>", an element line is not
 //    "<tag> <type> <ntags> <tags> <nodes>", its type has no code_aster
 //    equivalent, it has the wrong number of nodes or a node that $Nodes lacks;
-//  - (ASCII 4.1) the same for the entity blocks of $Nodes and $Elements;
+//  - (ASCII 4.0 and 4.1) the same for the entity blocks of $Nodes and $Elements;
+//  - (ASCII) $NodeData, $ElementData, $ElementNodeData: their tags, a time step
+//    0 to 100000, entity lines of a tag defined before and its values;
+//    $InterpolationScheme: matrices of the numbers that follow; (ASCII 4.x)
+//    $Entities: as many lines as entities announced; $PartitionedEntities,
+//    $Periodic, $GhostElements, $Parametrizations: refused (gmsh trusts their sizes);
 //  - a $PhysicalNames line is not '<dimension> <tag> "<name>"' with dimension 0 to 3;
 //  - (binary, "<path>: byte <offset> (binary section $<name> at byte <offset>): ...")
 //    the file is not 4.1 or 2.2, the integer after the version line is not 1, a
@@ -36,7 +41,16 @@ inline constexpr const char* kMshExpected = "a gmsh .msh file, version 2.2 or 4.
 //    dimension, an element refers to an undefined node or entity, or the file
 //    has a section gmsh reads that aster-lite does not check ($Periodic,
 //    $PartitionedEntities, $NodeData...: refused; unknown sections are skipped).
-// Text between sections is skipped, as gmsh does, and so is every line of $Comments.
+//  - the file is not framed as gmsh frames it: gmsh reads lines with fgets, in
+//    pieces of at most 254 or 1022 bytes, and opens a section at every piece that
+//    starts with '$' (comparing the beginning of the name: "$NodesX" is $Nodes).
+//    Refused: a header line longer than 254 bytes, a '$' after the first byte of
+//    a longer line, a name gmsh reads as another section, a second $MeshFormat
+//    (gmsh reads the file type again), in $Comments a line "$<name>" of a section
+//    gmsh reads; (binary) a section marker not alone on its chunk (a full
+//    1023-byte chunk is not the end of the file), a chunk "<byte>End<name>"
+//    inside a skipped section $<name> (gmsh ends it there).
+// Text between sections is skipped, as gmsh does, and so are the other lines of $Comments.
 // A section left open is reported before any error on the lines inside it (a
 // truncated file reads as such, not as a bad last line).
 void checkMshFile(const std::string& path);
