@@ -23,6 +23,7 @@
 #include "expr/expression.hpp"
 #include "linalg/blas_info.hpp"
 #include "linalg/factor_memory.hpp"
+#include "analysis/convergence_table.hpp"
 #include "analysis/static_nonlinear.hpp"
 
 using namespace aster;
@@ -84,10 +85,11 @@ void run(int N, const std::string& method) {
   problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::TotalLagrangianSVK);
   analysis::MechanicalSystem system(problem);
   analysis::NewtonSettings settings;
-  settings.print = getenv("NEWTON_PRINT") != nullptr;
   settings.resiGlobRela = 1e-8;
   settings.method = method;
   analysis::StaticNonlinear newton(system, nullptr, settings);
+  analysis::ConvergenceTable table(false);
+  if (getenv("NEWTON_PRINT")) newton.addObserver(table);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newton.unknownCount());
   const std::vector<double> times = {0, 0.2, 0.4, 0.6, 0.8, 1.0};
   double rx = 0, ry = 0;

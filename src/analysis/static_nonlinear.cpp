@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "analysis/convergence_table.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
@@ -41,10 +40,6 @@ StaticNonlinear::StaticNonlinear(MechanicalSystem& system, AdditionalTerms* term
   solver_->solver->setSingularityDigits(settings_.nprec);
   // Contact's terms keep the check: their symmetry is not exact by construction.
   solver_->solver->setSymmetricByConstruction(!terms_ && system_.symmetricTangent());
-  if (settings_.print) {
-    table_ = std::make_unique<ConvergenceTable>(terms_ != nullptr);
-    addObserver(*table_);
-  }
 }
 
 void StaticNonlinear::buildPattern() {

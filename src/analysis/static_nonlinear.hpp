@@ -47,10 +47,6 @@ struct NewtonSettings {
   int nprec = 8;               // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
   int subdPas = 4;     // SUBD_PAS
   int subdNiveau = 3;  // SUBD_NIVEAU (0: no cutting)
-  // The convergence table on standard output, installed by the driver as its first
-  // observer: for programs that drive StaticNonlinear directly (tests, benchmarks).
-  // STAT_NON_LINE installs its own ConvergenceTable.
-  bool print = false;
 };
 
 struct ConvergedInstant {
@@ -129,7 +125,6 @@ class StaticNonlinear {
   double previousDt_ = 0;
   int steps_ = 0;
   std::vector<NewtonObserver*> observers_;
-  std::unique_ptr<NewtonObserver> table_;  // settings.print's
 };
 
 }  // namespace aster::analysis

@@ -37,6 +37,7 @@
 
 #include "../support/square_mesh.hpp"
 #include "analysis/contact_terms.hpp"
+#include "analysis/convergence_table.hpp"
 #include "analysis/static_nonlinear.hpp"
 
 using namespace aster;
@@ -146,10 +147,11 @@ Outcome solve(const Case& c, Load loading, analysis::ZoneSettings zone = {}, dou
   z.settings = zone;
   auto terms = analysis::makeContactTerms(system, {z}, settings);
   analysis::NewtonSettings ns;
-  ns.print = print;
   ns.resiGlobRela = 1e-12;
   ns.iterGlobMaxi = 50;
   analysis::StaticNonlinear newton(system, terms.get(), ns);
+  analysis::ConvergenceTable table(true);
+  if (print) newton.addObserver(table);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newton.unknownCount());
   if (print) testing::internal::CaptureStdout();
   newton.run(U, {0.0, 1.0}, [&](const analysis::ConvergedInstant& ci) {

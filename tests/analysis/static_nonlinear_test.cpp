@@ -71,7 +71,6 @@ Outcome solve(int N, mesh::CellType type, mechanics::Kinematics kin, int steps,
   problem.kinematics.assign(model->cells().size(), kin);
   analysis::MechanicalSystem system(problem);
   analysis::NewtonSettings settings;
-  settings.print = false;
   settings.resiGlobRela = 1e-10;
   settings.iterGlobMaxi = iterGlobMaxi;
   analysis::StaticNonlinear newton(system, nullptr, settings);

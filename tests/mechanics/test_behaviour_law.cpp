@@ -193,7 +193,6 @@ TEST(BehaviourLaw, CubicLawThroughTheNewtonDriverMatchesTheHomogeneousSolution) 
   EXPECT_EQ(system.internalVariableCount(), 3);
 
   analysis::NewtonSettings settings;
-  settings.print = false;
   settings.resiGlobRela = 1e-12;
   analysis::StaticNonlinear newton(system, nullptr, settings);
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newton.unknownCount());
