@@ -82,7 +82,7 @@ void run(int N, const std::string& method) {
   problem.model = model;
   problem.materials = materials;
   problem.loads.push_back({&load, ramp});
-  problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::TotalLagrangianSVK);
+  problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::GreenLagrange);
   analysis::MechanicalSystem system(problem);
   analysis::NewtonSettings settings;
   settings.resiGlobRela = 1e-8;

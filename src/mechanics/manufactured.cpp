@@ -156,7 +156,7 @@ ContactTraction ManufacturedElasticity::contact(double X, double Y,
   const Eigen::Vector2d unitN = unitNormal(N);
   const Eigen::Vector2d t = firstPiola(X, Y) * unitN;
   Eigen::Vector2d n = unitN;
-  if (kinematics_ == Kinematics::TotalLagrangianSVK) {
+  if (kinematics_ == Kinematics::GreenLagrange) {
     const Eigen::Matrix2d F = Eigen::Matrix2d::Identity() + displacementGradient(X, Y);
     const double J = F.determinant();
     if (!(J > 0))

@@ -16,7 +16,7 @@ const char* planeHypothesisName(PlaneHypothesis hypothesis) {
 
 Kinematics kinematicsFromName(const std::string& word) {
   if (word == "PETIT") return Kinematics::SmallStrain;
-  if (word == "GROT_GDEP" || word == "GREEN_LAGRANGE") return Kinematics::TotalLagrangianSVK;
+  if (word == "GROT_GDEP" || word == "GREEN_LAGRANGE") return Kinematics::GreenLagrange;
   throw Error("DEFORMATION must be 'PETIT', 'GROT_GDEP' or 'GREEN_LAGRANGE', got '" + word + "'");
 }
 

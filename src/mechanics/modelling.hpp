@@ -13,7 +13,7 @@ enum class PlaneHypothesis { PlaneStrain, PlaneStress };
 // PETIT: eps = sym(grad u), Cauchy stress, reference configuration.
 // GROT_GDEP (also GREEN_LAGRANGE): total Lagrangian, Green-Lagrange strain E and
 // second Piola-Kirchhoff stress S.
-enum class Kinematics { SmallStrain, TotalLagrangianSVK };
+enum class Kinematics { SmallStrain, GreenLagrange };
 
 // Throw aster::Error naming the word and the choices.
 PlaneHypothesis planeHypothesisFromName(const std::string& word);  // D_PLAN, C_PLAN

@@ -123,7 +123,7 @@ void internalForce(const fem::ShapeTable<T>& table, const Law& law, Kinematics k
   constexpr int nodes = fem::Cell<T>::nodes;
   if (f) f->setZero();
   if (K) K->setZero();
-  const bool geometric = kinematics == Kinematics::TotalLagrangianSVK;
+  const bool geometric = kinematics == Kinematics::GreenLagrange;
   typename fem::Cell<T>::Gradients G;
   for (int q = 0; q < table.size(); ++q) {
     const double w = pointGradients<T>(table, X, q, G);

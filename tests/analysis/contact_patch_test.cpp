@@ -187,7 +187,7 @@ struct Exact {
 Exact pressedBlock(const Case& c) {
   Exact e;
   const double p = c.p;
-  if (c.kinematics == mechanics::Kinematics::TotalLagrangianSVK) {
+  if (c.kinematics == mechanics::Kinematics::GreenLagrange) {
     EXPECT_EQ(c.modelisation, model::Modelisation::PlaneStrain);
     const double Eb = kE / (1 - kNu * kNu);
     // Eb l2 (l2^2 - 1) / 2 + p = 0 by Newton from l2 = 1.
@@ -298,7 +298,7 @@ std::vector<Case> cases() {
       e.modelisation = model::Modelisation::PlaneStress;
       out.push_back(e);
       Case f = make(seg + "_GROT_GDEP", cell, cont);
-      f.kinematics = mechanics::Kinematics::TotalLagrangianSVK;
+      f.kinematics = mechanics::Kinematics::GreenLagrange;
       f.p = 0.1;  // 10.8 % shortening (9.1 % in small strain)
       out.push_back(f);
       Case g = make(seg + "_PENALISATION", cell, cont);
@@ -307,7 +307,7 @@ std::vector<Case> cases() {
       out.push_back(g);
       Case h = make(seg + "_PENALISATION_GROT_GDEP", cell, cont);
       h.penalty = 20.0;
-      h.kinematics = mechanics::Kinematics::TotalLagrangianSVK;
+      h.kinematics = mechanics::Kinematics::GreenLagrange;
       h.p = 0.1;
       h.N = 3, h.masterSegments = 2, h.masterRight = 1.0, h.masterLeft = 0.0;
       out.push_back(h);
@@ -321,7 +321,7 @@ INSTANTIATE_TEST_SUITE_P(Contact, PressedBlock, ::testing::ValuesIn(cases()),
 TEST(ContactPatchExact, LargeStrainSolutionDiffersFromTheLinearOne) {
   // The GROT_GDEP cases test something the small-strain ones do not.
   Case c;
-  c.kinematics = mechanics::Kinematics::TotalLagrangianSVK;
+  c.kinematics = mechanics::Kinematics::GreenLagrange;
   c.p = 0.1;
   const Exact e = pressedBlock(c);
   EXPECT_NEAR(e.l2, 0.8922, 1e-4);  // l2 (l2^2 - 1) / 2 = -0.091

@@ -50,7 +50,7 @@ analysis::MechanicalProblem problemOf(const Pieces& s, bool follower) {
   p.model = s.model;
   p.materials = s.materials;
   p.loads.push_back({&s.load, nullptr, follower});
-  p.kinematics.assign(s.model->cells().size(), mechanics::Kinematics::TotalLagrangianSVK);
+  p.kinematics.assign(s.model->cells().size(), mechanics::Kinematics::GreenLagrange);
   return p;
 }
 

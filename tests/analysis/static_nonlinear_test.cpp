@@ -116,7 +116,7 @@ Outcome solve(int N, mesh::CellType type, mechanics::Kinematics kin, int steps,
 }  // namespace
 
 TEST(StaticNonlinear, NewtonConvergesQuadraticallyOnSsnp150WithoutContact) {
-  const Outcome o = solve(8, mesh::CellType::QUAD8, mechanics::Kinematics::TotalLagrangianSVK, 4);
+  const Outcome o = solve(8, mesh::CellType::QUAD8, mechanics::Kinematics::GreenLagrange, 4);
   ASSERT_EQ(o.residuals.size(), 4u);
   for (const auto& r : o.residuals) {
     ASSERT_GE(r.size(), 3u);
@@ -136,7 +136,7 @@ TEST(StaticNonlinear, NewtonConvergesQuadraticallyOnSsnp150WithoutContact) {
 // Near convergence the residual is assembled alone first: every tangent assembled is
 // factorized, none is assembled at an iteration that converges.
 TEST(StaticNonlinear, NoTangentIsAssembledForTheConvergedIterate) {
-  const Outcome o = solve(8, mesh::CellType::QUAD8, mechanics::Kinematics::TotalLagrangianSVK, 4);
+  const Outcome o = solve(8, mesh::CellType::QUAD8, mechanics::Kinematics::GreenLagrange, 4);
   EXPECT_EQ(o.statistics.tangentAssemblies, o.statistics.factorizations);
   EXPECT_EQ(o.statistics.factorizations, o.statistics.iterations);
 }
@@ -179,7 +179,7 @@ struct Recorder : analysis::NewtonObserver {
 // step converge after as many corrections as the instant reports.
 TEST(StaticNonlinear, ObserversAreToldEveryStepAndIteration) {
   Recorder r;
-  const Outcome o = solve(4, mesh::CellType::QUAD8, mechanics::Kinematics::TotalLagrangianSVK, 2, &r);
+  const Outcome o = solve(4, mesh::CellType::QUAD8, mechanics::Kinematics::GreenLagrange, 2, &r);
   ASSERT_EQ(r.steps.size(), 2u);
   EXPECT_TRUE(r.cuts.empty());
   for (std::size_t s = 0; s < 2; ++s) {
@@ -207,7 +207,7 @@ TEST(StaticNonlinear, ObserversAreToldEveryStepAndIteration) {
 TEST(StaticNonlinear, ObserversAreToldOfStepCuts) {
   Recorder r;
   try {
-    solve(4, mesh::CellType::QUAD8, mechanics::Kinematics::TotalLagrangianSVK, 1, &r, 1);
+    solve(4, mesh::CellType::QUAD8, mechanics::Kinematics::GreenLagrange, 1, &r, 1);
   } catch (const Error&) {
     // Sub-steps may fail too: the cuts told before are what is checked.
   }
@@ -273,7 +273,7 @@ class ErrorRates : public ::testing::TestWithParam<RateCase> {};
 TEST_P(ErrorRates, L2ErrorDecreasesAtTheOptimalRate) {
   const RateCase rc = GetParam();
   std::vector<double> e;
-  for (int N : {4, 8, 16, 32}) e.push_back(solve(N, rc.type, mechanics::Kinematics::TotalLagrangianSVK, 2).l2Error);
+  for (int N : {4, 8, 16, 32}) e.push_back(solve(N, rc.type, mechanics::Kinematics::GreenLagrange, 2).l2Error);
   // The rate on N = 4, 8, 16, 32: the least-squares slope of log e against log h.
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (std::size_t k = 0; k < e.size(); ++k) {

@@ -22,7 +22,7 @@ namespace {
 constexpr double kRel = 1e-12;
 
 ManufacturedPtr ssnp150(double nu, PlaneHypothesis h = PlaneHypothesis::PlaneStrain,
-                        Kinematics k = Kinematics::TotalLagrangianSVK) {
+                        Kinematics k = Kinematics::GreenLagrange) {
   auto ux = Expression::compile("-0.2*Y**3*(X-0.5)", {"X", "Y"});
   auto uy = Expression::compile("-0.05*(X-0.5)**2*(1+Y) - 0.01*Y", {"X", "Y"});
   return std::make_shared<ManufacturedElasticity>(ux, uy, 1.0, nu, h, k);
@@ -99,7 +99,7 @@ TEST(Manufactured, Ssnp150PlaneStressNu03) {
   auto ux = Expression::compile("-0.2*Y**3*(X-0.5)", {"X", "Y"});
   auto uy = Expression::compile("-0.05*(X-0.5)**2*(1+Y) - 0.01*Y", {"X", "Y"});
   const double nu = 0.3, E2 = (1 + 2 * nu) / ((1 + nu) * (1 + nu)), nu2 = nu / (1 + nu);
-  ManufacturedElasticity strain(ux, uy, E2, nu2, PlaneHypothesis::PlaneStrain, Kinematics::TotalLagrangianSVK);
+  ManufacturedElasticity strain(ux, uy, E2, nu2, PlaneHypothesis::PlaneStrain, Kinematics::GreenLagrange);
   for (double x : {0.1, 0.45, 0.9})
     for (double y : {0.0, 0.6, 1.0})
       EXPECT_NEAR((strain.bodyForce(x, y) - m->bodyForce(x, y)).norm(), 0.0, 1e-14);
@@ -162,7 +162,7 @@ TEST(Manufactured, GreenLagrangeUniformStretchByHand) {
   // S11 = (lambda + 2 mu) E11 = 1.2 * 0.105 = 0.126, S22 = lambda E11 = 0.042,
   // Pi11 = 1.1 * 0.126 = 0.1386, Pi22 = 0.042. Homogeneous: no body force.
   ManufacturedElasticity m(Expression::compile("0.1*X", {"X", "Y"}), Expression::compile("0*Y", {"Y"}),
-                           1.0, 0.25, PlaneHypothesis::PlaneStrain, Kinematics::TotalLagrangianSVK);
+                           1.0, 0.25, PlaneHypothesis::PlaneStrain, Kinematics::GreenLagrange);
   const Eigen::Matrix2d P = m.firstPiola(0.4, 0.2);
   EXPECT_NEAR(P(0, 0), 0.1386, 1e-15);
   EXPECT_NEAR(P(1, 1), 0.042, 1e-15);
@@ -209,7 +209,7 @@ TEST(Manufactured, Errors) {
                 .find("E = 0 must be > 0"),
             std::string::npos);
   EXPECT_NE(message([] { kinematicsFromName("SIMO_MIEHE"); }).find("got 'SIMO_MIEHE'"), std::string::npos);
-  EXPECT_EQ(kinematicsFromName("GREEN_LAGRANGE"), Kinematics::TotalLagrangianSVK);
+  EXPECT_EQ(kinematicsFromName("GREEN_LAGRANGE"), Kinematics::GreenLagrange);
   EXPECT_EQ(planeHypothesisFromName("C_PLAN"), PlaneHypothesis::PlaneStress);
   EXPECT_THROW(planeHypothesisFromName("3D"), aster::Error);
   auto m = ssnp150(0.3);
@@ -217,7 +217,7 @@ TEST(Manufactured, Errors) {
   EXPECT_THROW(manufacturedFunction(m, ManufacturedQuantity::BodyForce, 2), aster::Error);
   // Nanson needs det F > 0: U = (-2 X, 0) folds the body over.
   ManufacturedElasticity folded(Expression::compile("-2*X", {"X"}), Expression::compile("0", {}), 1, 0.3,
-                                PlaneHypothesis::PlaneStrain, Kinematics::TotalLagrangianSVK);
+                                PlaneHypothesis::PlaneStrain, Kinematics::GreenLagrange);
   EXPECT_NE(message([&] { folded.contact(0.5, 0.0, {0.0, -1.0}); }).find("det F = -1 <= 0"), std::string::npos);
 }
 
