@@ -124,6 +124,24 @@ TEST(Vtk, VtuAndPvdFiles) {
   EXPECT_THROW(writeVtu(m, kOut + "mesh_bad.vtu", {{"X", {"A"}, {1.0}}}), aster::Error);
 }
 
+TEST(Vtk, ContactMultiplierIsItsOwnScalar) {
+  const Mesh m = readAsterMesh(kDir + "ssnp150b.mail");
+  NodalField f{"DEPL", {"DX", "DY", "LAGS_C"}, {}};
+  for (int n = 0; n < m.nodeCount(); ++n) f.values.insert(f.values.end(), {0.25, -0.5, 7.0});
+  writeVtu(m, kOut + "mesh_lags.vtu", {f});
+  std::ifstream vtu(kOut + "mesh_lags.vtu");
+  std::stringstream v;
+  v << vtu.rdbuf();
+  const std::string text = v.str();
+  EXPECT_NE(text.find("Name=\"DEPL\" NumberOfComponents=\"3\" ComponentName0=\"DX\" ComponentName1=\"DY\" "
+                      "format"),
+            std::string::npos);
+  EXPECT_NE(text.find("0.25 -0.5 0 \n"), std::string::npos);  // the vector: z = 0, not LAGS_C
+  EXPECT_EQ(text.find("0.25 -0.5 7"), std::string::npos);
+  EXPECT_NE(text.find("Name=\"DEPL_LAGS_C\" NumberOfComponents=\"1\" ComponentName0=\"LAGS_C\" format=\"ascii\">\n7 \n7 \n"),
+            std::string::npos);
+}
+
 TEST(Orientation, ReversedBoundarySegmentsAreTurnedOutward) {
   Mesh m = readAsterMesh(kDir + "ssnp150b.mail");
   // In ssnp150b.mail, M1 (x=0) goes up, M2 (y=1) goes right, M3 (x=1) goes down, M4 (y=0) goes left:

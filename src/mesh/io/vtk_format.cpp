@@ -63,19 +63,29 @@ void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<Nodal
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
       << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << mesh.nodeCount() << "\" NumberOfCells=\"" << mesh.cellCount()
       << "\">\n<PointData>\n";
-  for (const auto& f : fields) {
+  // One array of `count` components of f from component `first`, padded to 3 when 2.
+  auto writeArray = [&](const NodalField& f, const std::string& name, int first, int count) {
     const int nc = static_cast<int>(f.components.size());
-    const int width = nc == 2 ? 3 : nc;
-    out << "<DataArray type=\"Float64\" Name=\"" << f.name << "\" NumberOfComponents=\"" << width << "\"";
-    for (int k = 0; k < nc; ++k) out << " ComponentName" << k << "=\"" << f.components[k] << "\"";
+    out << "<DataArray type=\"Float64\" Name=\"" << name << "\" NumberOfComponents=\"" << (count == 2 ? 3 : count)
+        << "\"";
+    for (int k = 0; k < count; ++k) out << " ComponentName" << k << "=\"" << f.components[first + k] << "\"";
     out << " format=\"ascii\">\n";
     std::string text;
     for (int i = 0; i < mesh.nodeCount(); ++i) {
-      for (int k = 0; k < nc; ++k) appendNumber(text, f.values[static_cast<std::size_t>(i) * nc + k]);
-      if (nc == 2) text += "0 ";
+      for (int k = first; k < first + count; ++k) appendNumber(text, f.values[static_cast<std::size_t>(i) * nc + k]);
+      if (count == 2) text += "0 ";
       text += '\n';
     }
     out << text << "</DataArray>\n";
+  };
+  for (const auto& f : fields) {
+    const int nc = static_cast<int>(f.components.size());
+    if (nc > 2 && f.components[0] == "DX" && f.components[1] == "DY" && f.components[2] != "DZ") {
+      writeArray(f, f.name, 0, 2);
+      for (int k = 2; k < nc; ++k) writeArray(f, f.name + "_" + f.components[k], k, 1);
+    } else {
+      writeArray(f, f.name, 0, nc);
+    }
   }
   out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   std::string points;

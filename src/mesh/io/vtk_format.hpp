@@ -9,8 +9,11 @@
 
 namespace aster::mesh {
 
-// Fields of 2 components are padded to 3 (ParaView vectors). Point data named
-// by field; a "cell type" cell array is not written.
+// Point data named by field. Fields of 2 components are padded to 3 (ParaView
+// vectors). A plane displacement with more components (DX, DY, LAGS_C) is the
+// vector (DX, DY, 0) under the field's name and one scalar array per other
+// component, named <field>_<component> (DEPL_LAGS_C): a multiplier is never
+// drawn as a third displacement. A "cell type" cell array is not written.
 void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<NodalField>& fields = {});
 
 // Writes <stem>_<k>.vtu per instant next to `pvdPath` and the collection file.
