@@ -13,7 +13,7 @@ ConceptPtr calcFoncInterp(const Keywords& k, Session&, ConceptPtr) {
   if (f->parameters().size() != 1)
     throw Error("FONCTION must have one parameter to be tabulated, it has " +
                 std::to_string(f->parameters().size()) + " (" + expr::joinNames(f->parameters()) + ")");
-  if (k.has("NOM_PARA") && k.text("NOM_PARA") != f->parameters().front())
+  if (k.has("NOM_PARA") && !expr::takesOnly(*f, k.text("NOM_PARA")))
     throw Error("NOM_PARA='" + k.text("NOM_PARA") + "' but FONCTION's parameter is " + f->parameters().front());
   const auto& list = static_cast<RealListConcept&>(*k.conceptPtr("LIST_PARA")).values;
   return std::make_shared<FunctionConcept>("fonction_sdaster", expr::tabulate(*f, list, tabulatedOptionsOf(k)));

@@ -181,6 +181,7 @@ ConceptPtr eval(const Keywords& k, const FieldType& type, const std::string& typ
       args.assign(f->parameters().size(), 0.0);
       for (std::size_t i = 0; i < args.size(); ++i) {
         const auto& pname = f->parameters()[i];
+        if (pname == expr::kAnyParameter) continue;  // a constant: any argument
         auto it = params.find(pname);
         if (it == params.end())
           throw Error("the function of component " + comps[c] + " takes the parameter " + pname +

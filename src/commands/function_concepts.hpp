@@ -1,10 +1,11 @@
-// Concepts of the function family: formulas (formule), tabulated functions
-// (fonction_sdaster) and lists of reals (listr8_sdaster).
+// Concepts of the function family: formulas (formule), tabulated and constant
+// functions (fonction_sdaster) and lists of reals (listr8_sdaster).
 #pragma once
 #include <string>
 #include <vector>
 
 #include "core/concept.hpp"
+#include "expr/constant.hpp"
 #include "expr/function.hpp"
 #include "expr/tabulated.hpp"
 #include "lang/keywords.hpp"

@@ -50,6 +50,8 @@ Curve curveOf(const Keywords& occ, Session& session) {
     } else if (auto t = std::dynamic_pointer_cast<const expr::Tabulated>(f)) {
       c.x = t->abscissas();
       c.y = t->ordinates();
+    } else if (std::dynamic_pointer_cast<const expr::Constant>(f)) {
+      throw Error(occ.path + ": " + session.nameOf(*fc) + " is a constant (DEFI_CONSTANTE): give LIST_PARA, the abscissas to draw it at");
     } else {
       throw Error(occ.path + ": " + session.nameOf(*fc) + " is a formula: give LIST_PARA, the abscissas to evaluate it at");
     }

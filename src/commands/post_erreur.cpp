@@ -23,7 +23,7 @@ post::ExactFunction exactOf(const expr::FunctionPtr& f, const std::string& what)
   for (const auto& p : f->parameters()) {
     if (p == "X") which.push_back(0);
     else if (p == "Y") which.push_back(1);
-    else if (p == "Z") which.push_back(2);
+    else if (p == "Z" || p == expr::kAnyParameter) which.push_back(2);
     else throw Error(what + ": the exact solution takes the parameter " + p + "; only X, Y (and Z = 0) are given");
   }
   return [f, which](double x, double y) {

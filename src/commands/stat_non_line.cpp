@@ -111,7 +111,7 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
     }
     if (occ.has("FONC_MULT")) {
       applied.multiplier = functionOf(occ.conceptPtr("FONC_MULT"));
-      if (applied.multiplier->parameters().size() != 1 || applied.multiplier->parameters()[0] != "INST")
+      if (!expr::takesOnly(*applied.multiplier, "INST"))
         throw Error(occ.path + ": FONC_MULT must be a function of INST alone, it has parameters " +
                     expr::joinNames(applied.multiplier->parameters()));
     }

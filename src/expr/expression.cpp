@@ -129,7 +129,8 @@ double apply(const Instruction& in, const double* x, const std::vector<double>& 
       return m;
     }
     case OpCode::Constant:
-    case OpCode::Parameter: break;
+    case OpCode::Parameter:
+    case OpCode::Call: break;
   }
   throw Error("internal error: expression instruction without operands applied");
 }
@@ -325,10 +326,11 @@ class Lexer {
 
 class ExpressionCompiler {
  public:
-  explicit ExpressionCompiler(Expression& e) : e_(e) {}
+  ExpressionCompiler(Expression& e, const ExpressionContext& context) : e_(e), context_(context) {}
 
   void compile() {
     checkParameters();
+    checkContext();
     tokens_ = Lexer(e_.text_).run();
     if (tokens_.front().kind == Tok::End) throw Error("empty expression");
     const int root = parseSum();
@@ -361,6 +363,37 @@ class ExpressionCompiler {
       for (std::size_t j = 0; j < i; ++j)
         if (p[j] == p[i]) throw Error("parameter '" + p[i] + "' is listed twice");
     }
+  }
+
+  // Context names are named like parameters, and none is also a parameter.
+  void checkContext() const {
+    auto check = [&](const std::string& name) {
+      bool valid = !name.empty() && isNameStart(name[0]);
+      for (char c : name) valid = valid && isNameChar(c);
+      if (!valid) throw Error("context name '" + name + "' is not a valid name");
+      if (findFunction(name) || name == "pi")
+        throw Error("context name '" + name + "' is reserved (a function or a constant)");
+      for (const auto& p : e_.params_)
+        if (p == name) throw Error("context name '" + name + "' is also a parameter (NOM_PARA)");
+    };
+    for (const auto& [name, value] : context_.constants) {
+      check(name);
+      if (!std::isfinite(value))
+        throw Error("context value " + name + " = " + format::shortest(value) + " is not a finite number");
+    }
+    for (const auto& [name, f] : context_.functions) check(name);
+  }
+
+  const double* contextConstant(const std::string& name) const {
+    for (const auto& [n, v] : context_.constants)
+      if (n == name) return &v;
+    return nullptr;
+  }
+
+  const FunctionPtr* contextFunction(const std::string& name) const {
+    for (const auto& [n, f] : context_.functions)
+      if (n == name) return &f;
+    return nullptr;
   }
 
   [[noreturn]] void fail(const std::string& message, int column) const {
@@ -490,7 +523,9 @@ class ExpressionCompiler {
 
   int parseName(const Token& name) {
     const FunctionInfo* f = findFunction(name.text);
+    const FunctionPtr* user = contextFunction(name.text);
     if (peek().kind == Tok::LParen) {
+      if (user) return parseUserCall(name, *user);
       if (!f) {
         for (const auto& p : e_.params_)
           if (p == name.text)
@@ -506,14 +541,58 @@ class ExpressionCompiler {
     for (std::size_t i = 0; i < e_.params_.size(); ++i)
       if (e_.params_[i] == name.text)
         return add({OpCode::Parameter, name.column, 0.0, static_cast<int>(i), {}});
+    if (const double* v = contextConstant(name.text)) return constant(*v, name.column);
     if (name.text == "pi") return constant(kPi, name.column);
+    if (user)
+      fail("function '" + name.text + "' at column " + std::to_string(name.column) +
+               " must be called with arguments in parentheses",
+           name.column);
     if (f)
       fail("function '" + name.text + "' at column " + std::to_string(name.column) +
                " must be called with arguments in parentheses",
            name.column);
     fail("unknown name '" + name.text + "' at column " + std::to_string(name.column) +
-             " (parameters: " + joinNames(e_.params_) + ")",
+             " (parameters: " + joinNames(e_.params_) + contextNames() + ")",
          name.column);
+  }
+
+  // "; context: A, F" when the expression has a context.
+  std::string contextNames() const {
+    std::vector<std::string> names;
+    for (const auto& c : context_.constants) names.push_back(c.first);
+    for (const auto& c : context_.functions) names.push_back(c.first);
+    return names.empty() ? "" : "; context: " + joinNames(names);
+  }
+
+  // F(a, b) for a function F of the context: as many arguments as F has parameters.
+  int parseUserCall(const Token& name, const FunctionPtr& f) {
+    const Token& open = next();  // '('
+    enter(open);
+    std::vector<int> args;
+    if (peek().kind != Tok::RParen) {
+      while (true) {
+        args.push_back(parseSum());
+        if (peek().kind != Tok::Comma) break;
+        next();
+      }
+    }
+    expectClosing(open, "'" + name.text + "('");
+    --nesting_;
+    const std::size_t expected = f->parameters().size();
+    if (args.size() != expected)
+      fail("function '" + name.text + "' takes " + std::to_string(expected) + " argument" +
+               (expected == 1 ? "" : "s") + " (" + joinNames(f->parameters()) + "), got " +
+               std::to_string(args.size()) + " at column " + std::to_string(name.column),
+           name.column);
+    int index = -1;
+    for (std::size_t i = 0; i < e_.callees_.size(); ++i)
+      if (e_.callees_[i].name == name.text) index = static_cast<int>(i);
+    if (index < 0) {
+      e_.callees_.push_back({name.text, f, dynamic_cast<const Expression*>(f.get()),
+                             static_cast<int>(expected)});
+      index = static_cast<int>(e_.callees_.size()) - 1;
+    }
+    return add({OpCode::Call, name.column, 0.0, index, std::move(args)});
   }
 
   int parseCall(const Token& name, const FunctionInfo& f) {
@@ -612,11 +691,16 @@ class ExpressionCompiler {
       return;
     }
     const int count = static_cast<int>(n.kids.size());
+    if (n.op == OpCode::Call) {
+      push(OpCode::Call, n.index, n.column, count);
+      return;
+    }
     const bool variadic = n.op == OpCode::Min || n.op == OpCode::Max;
     push(n.op, variadic ? count : 0, n.column, count);
   }
 
   Expression& e_;
+  const ExpressionContext& context_;
   std::vector<Token> tokens_;
   std::size_t pos_ = 0;
   std::vector<Node> nodes_;
@@ -628,12 +712,18 @@ class ExpressionCompiler {
 };
 
 std::shared_ptr<Expression> Expression::compile(const std::string& text,
-                                                const std::vector<std::string>& params) {
+                                                const std::vector<std::string>& params,
+                                                const ExpressionContext& context) {
   std::shared_ptr<Expression> e(new Expression());
   e->text_ = text;
   e->params_ = params;
-  ExpressionCompiler(*e).compile();
+  ExpressionCompiler(*e, context).compile();
   return e;
+}
+
+void Expression::notDifferentiable(const Callee& c) const {
+  throw Error("function '" + c.name + "' called by " + excerpt(text_, 1) +
+              " is not a formula given as a text: it cannot be differentiated exactly");
 }
 
 double Expression::evaluateChecked(const double* args) const {
@@ -663,6 +753,17 @@ double Expression::evaluateChecked(const double* args) const {
     }
     if (in.op == OpCode::Parameter) {
       s[++top] = args[in.arg];
+      continue;
+    }
+    if (in.op == OpCode::Call) {
+      const Callee& c = callees_[in.arg];
+      top -= c.arity - 1;
+      const double r = c.expression ? c.expression->evaluateChecked(s + top) : c.function->evaluate(s + top);
+      if (!std::isfinite(r))
+        throw Error("function '" + c.name + "' returns " + format::shortest(r) + " at column " +
+                    std::to_string(columns_[k]) + " of " + excerpt(text_, columns_[k]) + ", with " +
+                    values());
+      s[top] = r;
       continue;
     }
     top -= arity(in) - 1;

@@ -4,6 +4,9 @@
 //   numbers    1  1.  .5  4.0E-05  1e3
 //   functions  sin cos tan asin acos atan atan2 sinh cosh tanh exp log log10 sqrt
 //              abs min max (min, max: two or more arguments); constant pi
+//   context    names given with the expression (FORMULE's other keywords): real
+//              constants, substituted at compile time, and functions called by name
+//              with as many arguments as they have parameters
 // evaluateT<T> runs the same code with double or an AD number (dual.hpp), so a
 // load can take exact derivatives of a formula. Evaluation allocates nothing
 // (up to kInlineDepth stack entries, far more than any real formula needs).
@@ -12,6 +15,8 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "expr/function.hpp"
@@ -35,6 +40,7 @@ enum class OpCode : std::uint8_t {
   Atan2,
   Min,  // arg operands
   Max,  // arg operands
+  Call,  // callees_[arg] of its parameter count operands
 };
 
 struct Instruction {
@@ -42,11 +48,20 @@ struct Instruction {
   std::int32_t arg;
 };
 
+class Expression;
+
+// Names an expression may use besides its parameters.
+struct ExpressionContext {
+  std::vector<std::pair<std::string, double>> constants;
+  std::vector<std::pair<std::string, FunctionPtr>> functions;
+};
+
 class Expression : public Function {
  public:
   // Parses and compiles; throws aster::Error naming the 1-based column of the problem.
   static std::shared_ptr<Expression> compile(const std::string& text,
-                                             const std::vector<std::string>& params);
+                                             const std::vector<std::string>& params,
+                                             const ExpressionContext& context = {});
 
   const std::vector<std::string>& parameters() const override { return params_; }
   double evaluate(const double* args) const override { return evaluateT<double>(args); }
@@ -70,10 +85,23 @@ class Expression : public Function {
   template <class T>
   T run(const T* args, T* stack) const;
 
+  // A function of the context called by the expression.
+  struct Callee {
+    std::string name;
+    FunctionPtr function;
+    const Expression* expression;  // function as a compiled expression, or null
+    int arity;
+  };
+  template <class T>
+  T call(const Callee& c, const T* args) const;
+  // A function that is not an expression has no derivatives to propagate.
+  [[noreturn]] void notDifferentiable(const Callee& c) const;
+
   std::string text_;
   std::vector<std::string> params_;
   std::vector<Instruction> code_;
   std::vector<double> constants_;
+  std::vector<Callee> callees_;
   std::vector<int> columns_;  // 1-based column of each instruction in text_, for messages
   int depth_ = 0;
 
@@ -139,9 +167,25 @@ T Expression::run(const T* args, T* s) const {
           if (s[top + k] > s[top]) s[top] = s[top + k];
         break;
       }
+      case OpCode::Call: {
+        const Callee& c = callees_[in.arg];
+        top -= c.arity - 1;
+        s[top] = call(c, s + top);
+        break;
+      }
     }
   }
   return s[0];
+}
+
+template <class T>
+T Expression::call(const Callee& c, const T* args) const {
+  if constexpr (std::is_same_v<T, double>) {
+    return c.function->evaluate(args);
+  } else {
+    if (!c.expression) notDifferentiable(c);
+    return c.expression->evaluateT<T>(args);
+  }
 }
 
 }  // namespace aster::expr

@@ -248,6 +248,17 @@ class Reader {
     c.reentrant = re[0];
     c.rules = rules(t, c.name);
     c.children = children(t, 1, c.name);
+    lua_getfield(L, t, "autres_mots_cles");
+    if (!lua_isnil(L, -1)) {
+      const int o = lua_absindex(L, -1);
+      if (!lua_istable(L, o) || fieldString(o, "__kind") != "SIMP") fail(c.name, "autres_mots_cles must be a SIMP{...}");
+      c.others = keyword(o, c.name);
+      if (c.others->max != 1 || c.others->statut != 'f' || !c.others->defaults.empty())
+        fail(c.name, "autres_mots_cles: one optional value without default");
+      for (const auto& k : c.children)
+        if (k.name == c.others->name) fail(c.name, "autres_mots_cles: " + k.name + " is already a keyword");
+    }
+    lua_pop(L, 1);
     return c;
   }
 

@@ -2,6 +2,7 @@
 // declarative files commands/<COMMAND>.lua (see docs/catalogue.md).
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,6 +60,11 @@ struct CommandSpec {
   char reentrant = 'n';              // 'n' no reuse, 'o' reuse required, 'f' reuse allowed
   std::vector<Rule> rules;
   std::vector<KeywordSpec> children;
+  // autres_mots_cles: the keywords not declared above, when the command takes them
+  // (FORMULE's names passed to the expression). Each must be named like an
+  // identifier and hold one value of others->types; the validator gathers them in
+  // one occurrence of a factor keyword named others->name.
+  std::optional<KeywordSpec> others;
 };
 
 class Catalogue {

@@ -72,6 +72,9 @@ std::string commandReference(const Catalogue& catalogue) {
     out << "\n\n";
     rulesText(out, spec.rules, "");
     keywordsText(out, spec.children, "");
+    if (spec.others)
+      out << "- any other keyword, `NAME = value` — optional, " << describeTypes(spec.others->types)
+          << (spec.others->doc.empty() ? "" : ". " + spec.others->doc) << "\n";
   }
   return out.str();
 }

@@ -1,5 +1,6 @@
 #include "lang/validator.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -66,8 +67,9 @@ class LevelValidator {
  public:
   LevelValidator(const std::string& command, const std::string& path) : command_(command), path_(path) {}
 
+  // others: the command's autres_mots_cles (top level only), or null.
   Keywords run(const std::vector<KeywordSpec>& specs, const std::vector<Rule>& rules, const Keywords& call,
-               const std::string& owner) {
+               const std::string& owner, const KeywordSpec* others = nullptr) {
     // Keywords that apply: the level's own, then those of blocks whose condition
     // holds (conditions see the defaults of keywords already known to apply).
     std::vector<const KeywordSpec*> active;
@@ -79,6 +81,7 @@ class LevelValidator {
 
     std::set<std::string> allowed;
     for (const auto* k : active) allowed.insert(k->name);
+    Keywords extra;  // the values of autres_mots_cles
     for (const auto& key : call.keys()) {
       if (allowed.count(key)) continue;
       for (const auto* b : inactiveBlocks)
@@ -87,11 +90,16 @@ class LevelValidator {
             fail(key, "keyword " + key + " is only allowed when " + b->describeCondition());
       std::vector<std::string> names(allowed.begin(), allowed.end());
       const std::string hint = didYouMean(key, names);
+      if (others) {
+        other(*others, key, call, extra, hint.empty() ? "" : ";" + hint);
+        continue;
+      }
       fail(key, "keyword " + key + " is not a keyword of " + owner + (hint.empty() ? "" : ";" + hint) + " (allowed: " + joinNames(orderedNames(active)) + ")");
     }
 
     Keywords out;
     out.path = path_;
+    if (others && !extra.keys().empty()) out.setFactor(others->name, {extra});
     for (const auto* k : active) {
       if (k->kind == KeywordSpec::Kind::Simple)
         simple(*k, call, out);
@@ -106,6 +114,33 @@ class LevelValidator {
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
     // Inside a factor keyword, say which occurrence: "AFFE[2]: keyword ...".
     throw ValidationError(joined(path_, key), path_.empty() ? what : path_ + ": " + what);
+  }
+
+  static bool isIdentifier(const std::string& s) {
+    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+    for (char c : s)
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+    return true;
+  }
+
+  // A keyword the catalogue does not declare, taken as one of the command's
+  // autres_mots_cles: named like an identifier, one value of the declared types.
+  void other(const KeywordSpec& spec, const std::string& key, const Keywords& call, Keywords& extra,
+             const std::string& hint) {
+    const std::string what = describeTypes(spec.types);
+    if (!isIdentifier(key))
+      fail(key, "keyword '" + key + "' is not a valid name: a value passed to the expression (" + spec.name +
+                    ") is named by a letter or _ then letters, digits or _");
+    Value v;
+    const std::string as = "keyword " + key + " is not one of " + command_ + "'s own keywords, so it is a value passed to the expression (" +
+                           spec.name + "): it must be " + what + ", got ";
+    if (call.isFactor(key)) fail(key, as + "a table of keywords" + hint);
+    const auto& given = call.values(key);
+    if (given.size() != 1 || !convert(given.front(), spec.types, v))
+      fail(key, as + (given.size() == 1 ? given.front().describe() : std::to_string(given.size()) + " values") + hint);
+    KeywordSpec named = spec;
+    named.name = key;
+    simple(named, call, extra);
   }
 
   static std::vector<const KeywordSpec*> flatten(const KeywordSpec& block) {
@@ -323,7 +358,7 @@ class LevelValidator {
 
 Keywords validate(const CommandSpec& spec, const Keywords& call) {
   LevelValidator top(spec.name, "");
-  return top.run(spec.children, spec.rules, call, spec.name);
+  return top.run(spec.children, spec.rules, call, spec.name, spec.others ? &*spec.others : nullptr);
 }
 
 }  // namespace aster::lang

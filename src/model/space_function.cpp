@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "expr/constant.hpp"
 #include "expr/expression.hpp"
 
 namespace aster::model {
@@ -19,6 +20,7 @@ SpaceFunction::SpaceFunction(expr::FunctionPtr f) : f_(std::move(f)) {
     else if (p == "Y") slot_[i] = 1;
     else if (p == "Z") slot_[i] = 2;
     else if (p == "INST") slot_[i] = 3;
+    else if (p == expr::kAnyParameter) slot_[i] = 0;  // a constant: any argument
     else throw Error("a load function may depend on X, Y, Z and INST only; its parameter '" + p +
                      "' is none of them");
   }

@@ -352,3 +352,80 @@ TEST(Validator, RejectsACallWithNoneOfAnAuMoinsUnRule) {
   const std::string why = minimumRejection(points(2), &keyword);
   EXPECT_NE(why.find("at least one of TOUT, GROUP_MA is required"), std::string::npos) << why;
 }
+
+// autres_mots_cles: undeclared keywords as named values (FORMULE's context).
+namespace {
+
+const CommandSpec& avecAutres() {
+  static const Catalogue cat = Catalogue::fromSources({{"AVEC_AUTRES", R"(
+return OPER{ nom = 'AVEC_AUTRES', sd_prod = 'formule',
+  SIMP{ 'NOM_PARA', statut = 'o', typ = 'TXM', max = '**' },
+  autres_mots_cles = SIMP{ 'CONTEXTE', typ = {'R', 'formule'} },
+}
+)"}});
+  return *cat.find("AVEC_AUTRES");
+}
+
+std::string validationError(const Keywords& call) {
+  try {
+    validate(avecAutres(), call);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST(Validator, OtherKeywordsAreGatheredAsNamedValues) {
+  Keywords call;
+  call.setSimple("NOM_PARA", {Value::ofText("X")});
+  call.setSimple("A", {Value::ofInteger(2)});
+  const auto f = std::make_shared<FakeConcept>("formule");
+  call.setSimple("G", {Value::ofConcept(f)});
+  const Keywords out = validate(avecAutres(), call);
+  EXPECT_FALSE(out.has("A"));
+  ASSERT_EQ(out.factor("CONTEXTE").size(), 1u);
+  const Keywords& ctx = out.factor("CONTEXTE").front();
+  EXPECT_EQ(ctx.keys(), (std::vector<std::string>{"A", "G"}));
+  EXPECT_EQ(ctx.value("A").kind, Value::Kind::Real);  // typed as 'R'
+  EXPECT_EQ(ctx.real("A"), 2.0);
+  EXPECT_EQ(ctx.conceptPtr("G"), f);
+  // None given: no CONTEXTE at all.
+  Keywords plain;
+  plain.setSimple("NOM_PARA", {Value::ofText("X")});
+  EXPECT_TRUE(validate(avecAutres(), plain).factor("CONTEXTE").empty());
+}
+
+TEST(Validator, OtherKeywordsAreCheckedAsDeclared) {
+  Keywords call;
+  call.setSimple("NOM_PARA", {Value::ofText("X")});
+  Keywords badName = call;
+  badName.setSimple("A B", {Value::ofReal(1.0)});
+  EXPECT_EQ(validationError(badName), "keyword 'A B' is not a valid name: a value passed to the expression (CONTEXTE) "
+                                      "is named by a letter or _ then letters, digits or _");
+  Keywords text = call;
+  text.setSimple("A", {Value::ofText("deux")});
+  EXPECT_EQ(validationError(text), "keyword A is not one of AVEC_AUTRES's own keywords, so it is a value passed to the "
+                                   "expression (CONTEXTE): it must be a real or a formule, got 'deux'");
+  Keywords two = call;
+  two.setSimple("A", {Value::ofReal(1.0), Value::ofReal(2.0)});
+  EXPECT_NE(validationError(two).find("got 2 values"), std::string::npos);
+  Keywords nan = call;
+  nan.setSimple("A", {Value::ofReal(std::nan(""))});
+  EXPECT_NE(validationError(nan).find("is not a finite number"), std::string::npos);
+  Keywords wrongConcept = call;
+  wrongConcept.setSimple("A", {Value::ofConcept(std::make_shared<FakeConcept>("maillage_sdaster"))});
+  EXPECT_NE(validationError(wrongConcept).find("it must be a real or a formule, got"), std::string::npos);
+}
+
+TEST(Catalogue, OtherKeywordsAreOneOptionalValue) {
+  EXPECT_THROW(Catalogue::fromSources({{"MAUVAIS", R"(
+return OPER{ nom = 'MAUVAIS', sd_prod = 'formule', autres_mots_cles = SIMP{ 'C', typ = 'R', max = '**' } })"}}),
+               Error);
+  EXPECT_THROW(Catalogue::fromSources({{"MAUVAIS", R"(
+return OPER{ nom = 'MAUVAIS', sd_prod = 'formule', SIMP{ 'C', typ = 'R' }, autres_mots_cles = SIMP{ 'C', typ = 'R' } })"}}),
+               Error);
+  EXPECT_THROW(Catalogue::fromSources({{"MAUVAIS", R"(
+return OPER{ nom = 'MAUVAIS', sd_prod = 'formule', autres_mots_cles = { 'C' } })"}}), Error);
+}
