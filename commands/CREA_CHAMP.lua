@@ -34,7 +34,7 @@ return OPER{ nom = 'CREA_CHAMP', sd_prod = {'cham_no_sdaster', 'cham_elem'}, ree
   BLOC{ 'b_extr', condition = { OPERATION = 'EXTR' },
     regles = { UN_PARMI('MAILLAGE', 'RESULTAT') },
     SIMP{ 'MAILLAGE', typ = 'maillage_sdaster', fr = "Mesh whose geometry is extracted." },
-    SIMP{ 'RESULTAT', typ = 'evol_noli', fr = "Result a field is extracted from." },
+    SIMP{ 'RESULTAT', typ = {'evol_noli', 'evol_elas'}, fr = "Result a field is extracted from." },
     BLOC{ 'b_extr_maillage', condition = { MAILLAGE = true },
       SIMP{ 'NOM_CHAM', statut = 'o', typ = 'TXM', into = {'GEOMETRIE'}, fr = "The node coordinates." },
     },

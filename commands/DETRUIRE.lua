@@ -1,7 +1,7 @@
 -- Every concept type of aster-lite.
 local CONCEPTS = {'maillage_sdaster', 'modele_sdaster', 'mater_sdaster', 'cham_mater', 'char_meca',
                   'char_cine_meca', 'char_contact', 'fonction_sdaster', 'nappe_sdaster', 'formule',
-                  'listr8_sdaster', 'list_inst', 'evol_noli', 'cham_no_sdaster', 'cham_elem',
+                  'listr8_sdaster', 'list_inst', 'evol_noli', 'evol_elas', 'cham_no_sdaster', 'cham_elem',
                   'table_sdaster', 'solu_manu'}
 
 return PROC{ nom = 'DETRUIRE',

@@ -1,6 +1,6 @@
 // Concepts holding computed fields: cham_no_sdaster (one nodal field), cham_elem
-// (one field at Gauss points) and evol_noli (STAT_NON_LINE's result: nodal and
-// Gauss point fields per converged instant).
+// (one field at Gauss points) and the results evol_noli (STAT_NON_LINE's) and
+// evol_elas (MECA_STATIQUE's): nodal and Gauss point fields per instant.
 // Fields are stored per mesh node (node-major, components in order), the form
 // the MED / GMSH / VTK writers take.
 #pragma once
@@ -56,8 +56,10 @@ struct ResultInstant {
 
 class ResultConcept : public Concept {
  public:
-  explicit ResultConcept(std::shared_ptr<model::Model> m) : model(std::move(m)) {}
-  std::string typeName() const override { return "evol_noli"; }
+  // `type`: evol_noli or evol_elas; both hold the same fields and serve the same commands.
+  explicit ResultConcept(std::shared_ptr<model::Model> m, std::string type = "evol_noli")
+      : model(std::move(m)), type_(std::move(type)) {}
+  std::string typeName() const override { return type_; }
   std::shared_ptr<model::Model> model;
   std::vector<ResultInstant> instants;
 
@@ -69,6 +71,9 @@ class ResultConcept : public Concept {
   static const mesh::NodalField& nodalField(const ResultInstant& i, const std::string& name);
   // A Gauss point field of an instant, or null.
   static const GaussField* gaussField(const ResultInstant& i, const std::string& name);
+
+ private:
+  std::string type_;
 };
 
 }  // namespace aster::lang

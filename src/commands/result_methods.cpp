@@ -52,6 +52,8 @@ Datum componentsOf(Concept& self, const std::vector<Value>&, Session&) {
 
 RegisterMethod m1("evol_noli", "getField", getField);
 RegisterMethod m2("evol_noli", "getAccessParameters", accessParameters);
+RegisterMethod e1("evol_elas", "getField", getField);
+RegisterMethod e2("evol_elas", "getAccessParameters", accessParameters);
 RegisterMethod m3("cham_no_sdaster", "getValues", valuesOf<NodalFieldConcept>);
 RegisterMethod m4("cham_no_sdaster", "getComponents", componentsOf<NodalFieldConcept>);
 RegisterMethod m5("cham_elem", "getValues", valuesOf<GaussFieldConcept>);

@@ -1,0 +1,33 @@
+-- The linear solver of the mechanical operators (STAT_NON_LINE, MECA_STATIQUE).
+function C_SOLVEUR()
+  return KEYWORDS{
+    FACT{ 'SOLVEUR', statut = 'd', fr = "Linear solver.",
+      SIMP{ 'METHODE', typ = 'TXM', defaut = 'MULT_FRONT', into = {'MULT_FRONT', 'UMFPACK', 'CHOLMOD', 'KLU', 'EIGEN_LU'},
+            fr = "Direct sparse solver. MULT_FRONT: multifrontal LDL^T without pivoting for symmetric matrices (contact multipliers included), UMFPACK taking over for the others; CHOLMOD needs a symmetric positive definite matrix." },
+      BLOC{ 'b_mult_front', condition = { METHODE = 'MULT_FRONT' },
+        SIMP{ 'RENUM', typ = 'TXM', defaut = 'AUTO', into = {'AUTO', 'AMD', 'METIS', 'SANS'},
+              fr = "Fill-reducing ordering: AUTO (AMD, nested dissection from 20000 unknowns), AMD, METIS, SANS (none); contact multipliers come last." },
+      },
+      BLOC{ 'b_umfpack', condition = { METHODE = 'UMFPACK' },
+        SIMP{ 'RENUM', typ = 'TXM', defaut = 'AUTO', into = {'AUTO', 'AMD', 'COLAMD', 'METIS', 'SANS'},
+              fr = "Fill-reducing ordering: AUTO (UMFPACK's choice), AMD (symmetric strategy), COLAMD (unsymmetric strategy), METIS, SANS (none)." },
+      },
+      BLOC{ 'b_cholmod', condition = { METHODE = 'CHOLMOD' },
+        SIMP{ 'RENUM', typ = 'TXM', defaut = 'AUTO', into = {'AUTO', 'AMD', 'METIS', 'SANS'},
+              fr = "Fill-reducing ordering: AUTO (AMD, nested dissection from 20000 unknowns), AMD, METIS, SANS (none)." },
+      },
+      BLOC{ 'b_klu', condition = { METHODE = 'KLU' },
+        SIMP{ 'RENUM', typ = 'TXM', defaut = 'AUTO', into = {'AUTO', 'AMD', 'COLAMD', 'SANS'},
+              fr = "Fill-reducing ordering: AUTO (AMD), AMD, COLAMD, SANS (none, no block triangular form)." },
+      },
+      BLOC{ 'b_eigen_lu', condition = { METHODE = 'EIGEN_LU' },
+        SIMP{ 'RENUM', typ = 'TXM', defaut = 'AUTO', into = {'AUTO', 'COLAMD'},
+              fr = "Fill-reducing ordering: Eigen's SparseLU orders with COLAMD (AUTO is COLAMD)." },
+      },
+      SIMP{ 'NPREC', typ = 'I', defaut = 8,
+            fr = "Singularity detection: a pivot that lost more than NPREC digits makes the matrix singular (NPREC <= 0: only a zero pivot)." },
+      SIMP{ 'STOP_SINGULIER', typ = 'TXM', defaut = 'OUI', into = {'OUI', 'NON'},
+            fr = "OUI: a singular matrix (NPREC) stops the computation; NON: only a zero pivot does, Newton's residual judges the rest." },
+    },
+  }
+end

@@ -1,0 +1,118 @@
+#include "analysis/static_linear.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "linalg/blas_info.hpp"
+
+namespace aster::analysis {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
+
+// Rows and columns of the fixed unknowns replaced by the identity's (a symmetric matrix stays symmetric).
+void eliminate(linalg::SparseMatrix& A, const std::vector<char>& fixed) {
+  A.makeCompressed();
+  const int* outer = A.outerIndexPtr();
+  const int* rows = A.innerIndexPtr();
+  double* values = A.valuePtr();
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (int p = outer[j]; p < outer[j + 1]; ++p)
+      if (fixed[j] || fixed[rows[p]]) values[p] = rows[p] == j ? 1.0 : 0.0;
+}
+
+}  // namespace
+
+StaticLinear::StaticLinear(const MechanicalSystem& system, LinearSettings settings)
+    : system_(system), settings_(std::move(settings)) {
+  solver_ = linalg::makeLinearSolver(settings_.method);
+  solver_->setOrdering(settings_.renum);
+  solver_->setSingularityDigits(settings_.nprec);
+  solver_->setSymmetricByConstruction(system_.symmetricTangent());
+}
+
+StaticLinear::~StaticLinear() = default;
+
+void StaticLinear::run(const std::vector<double>& times,
+                       const std::function<void(const ConvergedInstant&)>& solved) {
+  const auto start = Clock::now();
+  const int n = system_.dofCount();
+  // The pattern: every term with a stiffness, and every diagonal (eliminated rows become identity rows).
+  fem::ElementDofs all = system_.elementDofs();
+  for (int i = 0; i < n; ++i) all.add(&i, 1);
+  fem::AssemblyPattern pattern(n, all);
+  linalg::SparseMatrix K, A;
+  pattern.takeMatrix(K);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd fint, fext;
+  bool assembled = false, analyzed = false;
+  std::vector<char> factorizedFixed;  // the fixed unknowns of the factorization held (empty: none)
+  for (double t : times) {
+    auto assemblyStart = Clock::now();
+    // K = dFint/dU at U = 0 (the same at every U: the problem is linear), and F(t).
+    system_.evaluate(zero, t, fint, fext, assembled ? nullptr : &pattern, assembled ? nullptr : &K);
+    assembled = true;
+    stats_.assemblySeconds += seconds(assemblyStart);
+    const auto solveStart = Clock::now();
+    std::vector<char> fixed(n, 0);
+    Eigen::VectorXd target = Eigen::VectorXd::Zero(n);
+    for (const auto& [d, v] : system_.imposed(t)) {
+      fixed[d] = 1;
+      target(d) = v;
+    }
+    if (fixed != factorizedFixed) {
+      A = K;
+      eliminate(A, fixed);
+      factorizedFixed.clear();
+      try {
+        if (!analyzed) {
+          linalg::chooseBlasThreads(n);
+          solver_->analyze(A);
+          analyzed = true;
+        }
+        solver_->factorize(A);
+      } catch (const linalg::SingularMatrixError& e) {
+        throwSingular(e);
+      }
+      ++stats_.factorizations;
+      factorizedFixed = fixed;
+    }
+    // Free unknowns: K_ff U_f = F_f - K_fd U_d; fixed ones: their values.
+    Eigen::VectorXd rhs = fext - fint;
+    if (target.lpNorm<Eigen::Infinity>() > 0) rhs -= K * target;
+    for (int i = 0; i < n; ++i)
+      if (fixed[i]) rhs(i) = target(i);
+    Eigen::VectorXd U;
+    solver_->solve(rhs, U);
+    stats_.solveSeconds += seconds(solveStart);
+    if (!U.allFinite()) throw Error("the solution at the instant " + std::to_string(t) + " is not a number");
+    assemblyStart = Clock::now();
+    system_.evaluate(U, t, fint, fext, nullptr, nullptr);
+    stats_.assemblySeconds += seconds(assemblyStart);
+    Eigen::VectorXd reactions = fint - fext;
+    ConvergedInstant c;
+    c.time = t;
+    c.U = &U;
+    c.reactions = &reactions;
+    c.internalForces = &fint;
+    solved(c);
+  }
+  stats_.totalSeconds += seconds(start);
+}
+
+// The solver's message, with the unknown it names.
+void StaticLinear::throwSingular(const linalg::SingularMatrixError& e) const {
+  std::string where;
+  const int col = e.column() >= 0 ? e.column() : e.row();
+  const auto& map = system_.dofMap();
+  if (col >= 0)
+    for (int node = 0; node < map.nodeCount(); ++node)
+      if (map.count(node) && col >= map.first(node) && col < map.first(node) + map.count(node))
+        where = " (unknown " + std::string(col == map.first(node) ? "DX" : "DY") + " of node " +
+                system_.model().mesh().nodeName(node) + ")";
+  throw Error(std::string(e.what()) + where + ": check that the Dirichlet conditions fix every rigid-body motion");
+}
+
+}  // namespace aster::analysis

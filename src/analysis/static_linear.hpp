@@ -1,0 +1,55 @@
+// MECA_STATIQUE's algorithm: linear elasticity in small strain at one or several
+// instants. The stiffness does not depend on the instant: it is assembled and
+// factorized once (again only if the set of imposed unknowns changes), and each
+// instant is one solve with its loads. Imposed displacements are eliminated as
+// the Newton driver does (rows and columns replaced by the identity's).
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "analysis/mechanical_system.hpp"
+#include "analysis/static_nonlinear.hpp"
+#include "linalg/linear_solver.hpp"
+
+namespace aster::analysis {
+
+struct LinearSettings {
+  std::string method = "MULT_FRONT";  // SOLVEUR/METHODE
+  std::string renum = "AUTO";         // SOLVEUR/RENUM
+  int nprec = 8;                      // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
+};
+
+struct LinearStatistics {
+  int factorizations = 0;
+  double assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;
+};
+
+class StaticLinear {
+ public:
+  // `system` must be linear: every cell in small strain with a law without history,
+  // no follower load (the caller's to ensure).
+  StaticLinear(const MechanicalSystem& system, LinearSettings settings);
+  ~StaticLinear();
+
+  // Solves K U = F(t) with the imposed values of t at each instant; `solved` gets
+  // each (ConvergedInstant with iterations = 0: reactions = fint - fext).
+  void run(const std::vector<double>& times, const std::function<void(const ConvergedInstant&)>& solved);
+
+  int unknownCount() const { return system_.dofCount(); }
+  const LinearStatistics& statistics() const { return stats_; }
+  const linalg::LinearSolverStatistics& solverStatistics() const { return solver_->statistics(); }
+
+ private:
+  [[noreturn]] void throwSingular(const linalg::SingularMatrixError& e) const;
+
+  const MechanicalSystem& system_;
+  LinearSettings settings_;
+  std::unique_ptr<linalg::LinearSolver> solver_;
+  LinearStatistics stats_;
+};
+
+}  // namespace aster::analysis
