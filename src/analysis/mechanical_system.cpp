@@ -438,4 +438,12 @@ void MechanicalSystem::gaussGeometry(std::vector<int>& offsets, std::vector<doub
   }
 }
 
+std::string MechanicalSystem::unknownName(int dof) const {
+  for (int node = 0; node < dofs_.nodeCount(); ++node)
+    if (dofs_.count(node) && dof >= dofs_.first(node) && dof < dofs_.first(node) + dofs_.count(node))
+      return std::string("unknown ") + (dof == dofs_.first(node) ? "DX" : "DY") + " of node " +
+             problem_.model->mesh().nodeName(node);
+  return "";
+}
+
 }  // namespace aster::analysis

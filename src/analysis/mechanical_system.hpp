@@ -5,6 +5,7 @@
 // (analysis/contact_terms.hpp).
 #pragma once
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -60,6 +61,8 @@ class MechanicalSystem {
   const fem::DofMap& dofMap() const { return dofs_; }
   int dofCount() const { return dofs_.dofCount(); }
   const model::Model& model() const { return *problem_.model; }
+  // "unknown DY of node N12" for a displacement unknown, "" for any other index.
+  std::string unknownName(int dof) const;
   const MechanicalProblem& problem() const { return problem_; }
   // DOF of (node, component), -1 when the node carries none.
   int dof(int node, int component) const { return dofs_.count(node) ? dofs_.dof(node, component) : -1; }

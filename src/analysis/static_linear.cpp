@@ -12,17 +12,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
 
-// Rows and columns of the fixed unknowns replaced by the identity's (a symmetric matrix stays symmetric).
-void eliminate(linalg::SparseMatrix& A, const std::vector<char>& fixed) {
-  A.makeCompressed();
-  const int* outer = A.outerIndexPtr();
-  const int* rows = A.innerIndexPtr();
-  double* values = A.valuePtr();
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (int p = outer[j]; p < outer[j + 1]; ++p)
-      if (fixed[j] || fixed[rows[p]]) values[p] = rows[p] == j ? 1.0 : 0.0;
-}
-
 }  // namespace
 
 StaticLinear::StaticLinear(const MechanicalSystem& system, LinearSettings settings)
@@ -64,7 +53,7 @@ void StaticLinear::run(const std::vector<double>& times,
     }
     if (fixed != factorizedFixed) {
       A = K;
-      eliminate(A, fixed);
+      linalg::eliminateFixedUnknowns(A, fixed);
       factorizedFixed.clear();
       try {
         if (!analyzed) {
@@ -104,14 +93,9 @@ void StaticLinear::run(const std::vector<double>& times,
 
 // The solver's message, with the unknown it names.
 void StaticLinear::throwSingular(const linalg::SingularMatrixError& e) const {
-  std::string where;
   const int col = e.column() >= 0 ? e.column() : e.row();
-  const auto& map = system_.dofMap();
-  if (col >= 0)
-    for (int node = 0; node < map.nodeCount(); ++node)
-      if (map.count(node) && col >= map.first(node) && col < map.first(node) + map.count(node))
-        where = " (unknown " + std::string(col == map.first(node) ? "DX" : "DY") + " of node " +
-                system_.model().mesh().nodeName(node) + ")";
+  const std::string unknown = col >= 0 ? system_.unknownName(col) : "";
+  const std::string where = unknown.empty() ? "" : " (" + unknown + ")";
   throw Error(std::string(e.what()) + where + ": check that the Dirichlet conditions fix every rigid-body motion");
 }
 

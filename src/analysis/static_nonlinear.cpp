@@ -277,16 +277,6 @@ StaticNonlinear::Verdict StaticNonlinear::convergence(const Eigen::VectorXd& U, 
 }
 
 // Rows and columns of the fixed unknowns replaced by the identity's (a symmetric matrix stays symmetric).
-void StaticNonlinear::eliminateFixedUnknowns(linalg::SparseMatrix& A, const std::vector<char>& fixed) const {
-  A.makeCompressed();
-  const int* outer = A.outerIndexPtr();
-  const int* rows = A.innerIndexPtr();
-  double* values = A.valuePtr();
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (int p = outer[j]; p < outer[j + 1]; ++p)
-      if (fixed[j] || fixed[rows[p]]) values[p] = rows[p] == j ? 1.0 : 0.0;
-}
-
 // Newton correction: K dU = -r on the free unknowns, dU = target - U on the fixed ones;
 // the matrix is eliminated and factorized again when it changed.
 void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Iteration& it) {
@@ -305,7 +295,7 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
     // again); the elastic matrix, kept for the whole run, is copied first.
     if (it.elastic) KelasticEliminated_ = Kelastic_;
     linalg::SparseMatrix& A = it.elastic ? KelasticEliminated_ : K_;
-    eliminateFixedUnknowns(A, step.fixed);
+    linalg::eliminateFixedUnknowns(A, step.fixed);
     factorized_ = Factorized::None;
     try {
       if (!analyzed_) {
@@ -336,11 +326,8 @@ void StaticNonlinear::throwSingular(const linalg::SingularMatrixError& e) const 
   std::string where;
   const int col = e.column() >= 0 ? e.column() : e.row();
   if (col >= 0 && col < nm) {
-    const auto& map = system_.dofMap();
-    for (int node = 0; node < map.nodeCount(); ++node)
-      if (map.count(node) && col >= map.first(node) && col < map.first(node) + map.count(node))
-        where = " (unknown " + std::string(col == map.first(node) ? "DX" : "DY") + " of node " +
-                system_.model().mesh().nodeName(node) + ")";
+    const std::string unknown = system_.unknownName(col);
+    if (!unknown.empty()) where = " (" + unknown + ")";
   } else if (col >= nm) {
     where = " (a contact unknown)";
   }

@@ -95,7 +95,6 @@ class StaticNonlinear {
   void fixUnknowns(Step& step) const;
   bool measureResidual(const Step& step, Iteration& it, std::vector<double>& history, std::string& why);
   Verdict convergence(const Eigen::VectorXd& U, const Step& step, Iteration& it) const;
-  void eliminateFixedUnknowns(linalg::SparseMatrix& A, const std::vector<char>& fixed) const;
   void factorAndSolve(Eigen::VectorXd& U, const Step& step, Iteration& it);
   void report(const Iteration& it, const char* matrix) const;
   [[noreturn]] void throwSingular(const linalg::SingularMatrixError& e) const;

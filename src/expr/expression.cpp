@@ -564,8 +564,8 @@ class ExpressionCompiler {
     return names.empty() ? "" : "; context: " + joinNames(names);
   }
 
-  // F(a, b) for a function F of the context: as many arguments as F has parameters.
-  int parseUserCall(const Token& name, const FunctionPtr& f) {
+  // The arguments of a call "name(a, b, ...)", from its '(' to its ')'.
+  std::vector<int> parseArguments(const Token& name) {
     const Token& open = next();  // '('
     enter(open);
     std::vector<int> args;
@@ -578,6 +578,12 @@ class ExpressionCompiler {
     }
     expectClosing(open, "'" + name.text + "('");
     --nesting_;
+    return args;
+  }
+
+  // F(a, b) for a function F of the context: as many arguments as F has parameters.
+  int parseUserCall(const Token& name, const FunctionPtr& f) {
+    std::vector<int> args = parseArguments(name);
     const std::size_t expected = f->parameters().size();
     if (args.size() != expected)
       fail("function '" + name.text + "' takes " + std::to_string(expected) + " argument" +
@@ -596,18 +602,7 @@ class ExpressionCompiler {
   }
 
   int parseCall(const Token& name, const FunctionInfo& f) {
-    const Token& open = next();  // '('
-    enter(open);
-    std::vector<int> args;
-    if (peek().kind != Tok::RParen) {
-      while (true) {
-        args.push_back(parseSum());
-        if (peek().kind != Tok::Comma) break;
-        next();
-      }
-    }
-    expectClosing(open, "'" + name.text + "('");
-    --nesting_;
+    std::vector<int> args = parseArguments(name);
     const int count = static_cast<int>(args.size());
     if (count < f.minArgs || (f.maxArgs >= 0 && count > f.maxArgs)) {
       std::string expected = f.maxArgs < 0 ? "at least " + std::to_string(f.minArgs)
