@@ -121,7 +121,7 @@ ConceptPtr extr(const Keywords& k, const FieldType& type, const std::string& typ
   if (k.text("INTERPOL") != "NON")
     throw Error("INTERPOL='" + k.text("INTERPOL") + "' is not available yet: give a stored INST or NUME_ORDRE");
   const ResultInstant& inst = instantOf(*result, k);
-  for (const auto& g : inst.gauss)
+  for (const auto& g : inst.cells)
     if (g.name == name)
       throw Error("NOM_CHAM='" + name + "' is a field at Gauss points: TYPE_CHAM='ELGA_" + name.substr(0, name.find('_')) +
                   "_R', not " + typeCham);
@@ -262,7 +262,7 @@ ConceptPtr creaChamp(const Keywords& k, Session& session, ConceptPtr) {
   if (type.support == "ELGA") return creaChampElga(k, session, typeCham, type.quantity, type.scalar == "F");
   if (op == "DISC") {
     const auto sc = k.conceptPtr("CHAM_GD");
-    if (std::dynamic_pointer_cast<GaussFieldConcept>(sc))
+    if (std::dynamic_pointer_cast<CellFieldConcept>(sc))
       throw Error("OPERATION='DISC' from the field at Gauss points " + session.nameOf(*sc) + " to TYPE_CHAM='" + typeCham +
                   "' is not possible: DISC moves nodal fields to the Gauss points (TYPE_CHAM='ELGA_*'), not back");
     throw Error("OPERATION='DISC': CHAM_GD " + session.nameOf(*sc) + " is already a nodal field; TYPE_CHAM='" + typeCham +

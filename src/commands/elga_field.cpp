@@ -38,7 +38,7 @@ std::vector<int> modelCellsInOrder(const model::Model& m) {
 }
 
 // Collects a field component by component on the cells of a model, then lays it
-// out as a GaussField (cell after cell, point after point, component after component).
+// out as a CellField (cell after cell, point after point, component after component).
 class Builder {
  public:
   Builder(std::shared_ptr<model::Model> model, std::string quantity)
@@ -77,7 +77,7 @@ class Builder {
   std::shared_ptr<ElgaFieldConcept> build(const std::string& name, bool prolZero, bool functions,
                                           const std::string& empty) const {
     const std::size_t nc = names_.size();
-    GaussField f;
+    CellField f;
     f.name = name;
     f.components = names_;
     f.offsets.push_back(0);
@@ -117,13 +117,13 @@ class Builder {
 };
 
 // Where a field at Gauss points has each cell of its mesh (-1: not there).
-std::vector<int> cellPositions(const GaussFieldConcept& f) {
+std::vector<int> cellPositions(const CellFieldConcept& f) {
   std::vector<int> pos(f.mesh->cellCount(), -1);
   for (std::size_t k = 0; k < f.field.cells.size(); ++k) pos[f.field.cells[k]] = static_cast<int>(k);
   return pos;
 }
 
-bool isFunctionElga(const GaussFieldConcept& f) {
+bool isFunctionElga(const CellFieldConcept& f) {
   const auto* e = dynamic_cast<const ElgaFieldConcept*>(&f);
   return e && e->functionField;
 }
@@ -193,7 +193,7 @@ ConceptPtr affe(const Keywords& k, const std::string& typeCham, const std::strin
 ConceptPtr disc(const Keywords& k, const std::string& typeCham, const std::string& quantity, Session& session) {
   const auto sc = k.conceptPtr("CHAM_GD");
   const std::string name = session.nameOf(*sc);
-  if (std::dynamic_pointer_cast<GaussFieldConcept>(sc))
+  if (std::dynamic_pointer_cast<CellFieldConcept>(sc))
     throw Error("CHAM_GD " + name + " is already a field at Gauss points; OPERATION='DISC' moves a nodal field (NOEU_*) to them");
   auto src = std::dynamic_pointer_cast<NodalFieldConcept>(sc);
   if (!src) throw Error("CHAM_GD " + name + " is not a nodal field");
@@ -255,15 +255,15 @@ ConceptPtr eval(const Keywords& k, const std::string& typeCham, const std::strin
                 "TYPE_CHAM='ELGA_NEUT_F', MODELE=...})");
   }
   struct Param {
-    const GaussFieldConcept* field;
+    const CellFieldConcept* field;
     int component;
   };
   std::map<std::string, Param> params;
-  std::map<const GaussFieldConcept*, std::vector<int>> positions;
+  std::map<const CellFieldConcept*, std::vector<int>> positions;
   std::string available;
   for (const auto& pc : k.concepts("CHAM_PARA")) {
     const std::string pname = session.nameOf(*pc);
-    auto p = std::dynamic_pointer_cast<GaussFieldConcept>(pc);
+    auto p = std::dynamic_pointer_cast<CellFieldConcept>(pc);
     if (!p) {
       if (std::dynamic_pointer_cast<NodalFieldConcept>(pc))
         throw Error("CHAM_PARA: " + pname + " is a nodal field; CHAM_F is at Gauss points: move " + pname +
@@ -291,7 +291,7 @@ ConceptPtr eval(const Keywords& k, const std::string& typeCham, const std::strin
   for (std::size_t kf = 0; kf < ff->field.cells.size(); ++kf) {
     const int cell = ff->field.cells[kf];
     const int kb = b.position(cell);
-    const int points = gaussPointsOf(ff->field, kf);
+    const int points = pointsOf(ff->field, kf);
     for (std::size_t c = 0; c < nc; ++c) {
       if (!ff->present[kf * nc + c]) continue;
       b.setPresent(out[c], static_cast<std::size_t>(kb));
@@ -308,13 +308,13 @@ ConceptPtr eval(const Keywords& k, const std::string& typeCham, const std::strin
             throw Error("the function of component " + comps[c] + " takes the parameter " + pname +
                         " that no field of CHAM_PARA gives (components given: " +
                         (available.empty() ? "none" : available) + ")");
-          const GaussFieldConcept& p = *it->second.field;
+          const CellFieldConcept& p = *it->second.field;
           const int kp = positions[&p][cell];
           if (kp < 0 || !componentPresent(p, static_cast<std::size_t>(kp), it->second.component))
             throw Error("the field " + session.nameOf(p) + " giving " + pname + " is not defined on cell " +
                         mesh.cellName(cell));
-          if (gaussPointsOf(p.field, kp) != points)
-            throw Error("the field " + session.nameOf(p) + " has " + std::to_string(gaussPointsOf(p.field, kp)) +
+          if (pointsOf(p.field, kp) != points)
+            throw Error("the field " + session.nameOf(p) + " has " + std::to_string(pointsOf(p.field, kp)) +
                         " points on cell " + mesh.cellName(cell) + ", CHAM_F " + std::to_string(points));
           const std::size_t pnc = p.field.components.size();
           args[i] = p.field.values[p.field.offsets[kp] + q * pnc + it->second.component];
@@ -339,7 +339,7 @@ ConceptPtr asse(const Keywords& k, const std::string& typeCham, const std::strin
                   "') is assembled on cells: give TOUT='OUI' or GROUP_MA");
     const auto sc = occ.conceptPtr("CHAM_GD");
     const std::string name = session.nameOf(*sc);
-    auto src = std::dynamic_pointer_cast<GaussFieldConcept>(sc);
+    auto src = std::dynamic_pointer_cast<CellFieldConcept>(sc);
     if (!src) {
       if (std::dynamic_pointer_cast<NodalFieldConcept>(sc))
         throw Error(occ.path + ": CHAM_GD " + name + " is a nodal field; a field at Gauss points assembles fields at "
@@ -371,7 +371,7 @@ ConceptPtr asse(const Keywords& k, const std::string& typeCham, const std::strin
       for (int cell : selectCells(mesh, occ)) {
         const int kb = b.position(cell), ks = positions[cell];
         if (kb < 0 || ks < 0 || !componentPresent(*src, static_cast<std::size_t>(ks), sourceComps[i])) continue;
-        const int points = gaussPointsOf(src->field, ks);
+        const int points = pointsOf(src->field, ks);
         if (points != b.points(kb))
           throw Error(occ.path + ": CHAM_GD " + name + " has " + std::to_string(points) + " points on cell " +
                       mesh.cellName(cell) + " where the model has " + std::to_string(b.points(kb)));
@@ -401,7 +401,7 @@ ConceptPtr extr(const Keywords& k, const std::string& typeCham, const std::strin
   if (k.text("INTERPOL") != "NON")
     throw Error("INTERPOL='" + k.text("INTERPOL") + "' is not available yet: give a stored INST or NUME_ORDRE");
   const ResultInstant& inst = instantOf(*result, k);
-  const GaussField* g = ResultConcept::gaussField(inst, name);
+  const CellField* g = ResultConcept::cellField(inst, name);
   if (!g) {
     ResultConcept::nodalField(inst, name);  // throws listing the fields when absent
     throw Error("NOM_CHAM='" + name + "' is a nodal field: TYPE_CHAM='NOEU_..._R' (then OPERATION='DISC' to move it "
@@ -411,9 +411,9 @@ ConceptPtr extr(const Keywords& k, const std::string& typeCham, const std::strin
   if (quantity != expected) throw Error("NOM_CHAM='" + name + "' gives an ELGA_" + expected + "_R field, not " + typeCham);
   const auto& mesh = result->model->mesh();
   for (std::size_t kc = 0; kc < g->cells.size(); ++kc)
-    if (gaussPointsOf(*g, kc) != post::modelGaussPointCount(mesh.cellType(g->cells[kc])))
+    if (pointsOf(*g, kc) != post::modelGaussPointCount(mesh.cellType(g->cells[kc])))
       throw Error("NOM_CHAM='" + name + "': cell " + mesh.cellName(g->cells[kc]) + " holds " +
-                  std::to_string(gaussPointsOf(*g, kc)) + " points, not those of the model's integration scheme");
+                  std::to_string(pointsOf(*g, kc)) + " points, not those of the model's integration scheme");
   auto out = std::make_shared<ElgaFieldConcept>(result->model, quantity, *g);
   out->present.assign(g->cells.size() * g->components.size(), 1);
   return out;
@@ -423,7 +423,7 @@ void printField(const ElgaFieldConcept& f, const std::string& name) {
   const std::size_t nc = f.field.components.size();
   std::string s = "field " + name + " at Gauss points (" + std::to_string(f.field.cells.size()) + " cells):\n";
   for (std::size_t k = 0; k < f.field.cells.size(); ++k)
-    for (int q = 0; q < gaussPointsOf(f.field, k); ++q) {
+    for (int q = 0; q < pointsOf(f.field, k); ++q) {
       s += "  " + f.mesh->cellName(f.field.cells[k]) + " point " + std::to_string(q + 1);
       for (std::size_t c = 0; c < nc; ++c) {
         if (!f.present[k * nc + c]) continue;

@@ -21,10 +21,10 @@ namespace aster::lang {
 
 struct Session;
 
-class ElgaFieldConcept : public GaussFieldConcept {
+class ElgaFieldConcept : public CellFieldConcept {
  public:
-  ElgaFieldConcept(std::shared_ptr<model::Model> m, std::string q, GaussField f)
-      : GaussFieldConcept(m->meshPtr(), std::move(f)), model(std::move(m)), quantity(std::move(q)) {}
+  ElgaFieldConcept(std::shared_ptr<model::Model> m, std::string q, CellField f)
+      : CellFieldConcept(m->meshPtr(), std::move(f)), model(std::move(m)), quantity(std::move(q)) {}
   std::shared_ptr<model::Model> model;
   std::string quantity;       // NEUT, DEPL, GEOM, SIEF
   std::vector<char> present;  // present[k * components + c]: component c is defined on field.cells[k]
@@ -34,13 +34,9 @@ class ElgaFieldConcept : public GaussFieldConcept {
   std::vector<expr::FunctionPtr> functions;
 };
 
-// Every field at Gauss points has its points per cell; a field taken from a
-// result (resu:getField('SIEF_ELGA')) has every component on every cell.
-inline int gaussPointsOf(const GaussField& f, std::size_t k) {
-  const std::size_t nc = f.components.size();
-  return nc ? static_cast<int>((f.offsets[k + 1] - f.offsets[k]) / static_cast<int>(nc)) : 0;
-}
-inline bool componentPresent(const GaussFieldConcept& f, std::size_t k, std::size_t c) {
+// A field taken from a result (resu:getField('SIEF_ELGA')) has every component
+// on every cell.
+inline bool componentPresent(const CellFieldConcept& f, std::size_t k, std::size_t c) {
   const auto* e = dynamic_cast<const ElgaFieldConcept*>(&f);
   return !e || e->present.empty() || e->present[k * f.field.components.size() + c];
 }

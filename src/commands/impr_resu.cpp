@@ -49,7 +49,7 @@ struct Item {
   bool meshOnly = false;                       // MAILLAGE alone
   bool isResult = false;
   std::vector<mesh::FieldInstant> instants;    // nodal fields (CHAM_GD: one instant)
-  std::vector<std::vector<const GaussField*>> gauss;  // per instant (results, RESULTAT format)
+  std::vector<std::vector<const CellField*>> cellFields;  // per instant (results, RESULTAT format)
   std::vector<int> nodes;                      // RESULTAT format: the nodes to print
   std::vector<int> cells;                      // RESULTAT format: the cells of Gauss fields (empty: all)
 };
@@ -136,7 +136,7 @@ Item resolve(const Keywords& occ, bool textFormat) {
     mesh::FieldInstant fi;
     fi.fields.push_back(keepComponents(f->field, cmps, f->mesh->nodeCount(), f->field.name));
     item.instants.push_back(std::move(fi));
-    item.gauss.emplace_back();
+    item.cellFields.emplace_back();
     item.nodes = f->support;
   } else if (occ.has("RESULTAT")) {
     auto r = occ.concept<ResultConcept>("RESULTAT");
@@ -148,14 +148,14 @@ Item resolve(const Keywords& occ, bool textFormat) {
       mesh::FieldInstant fi;
       fi.index = ri->index;
       fi.time = ri->time;
-      std::vector<const GaussField*> gauss;
+      std::vector<const CellField*> gauss;
       if (names.empty()) {
         for (const auto& f : ri->nodal) fi.fields.push_back(keepComponents(f, cmps, item.mesh->nodeCount(), f.name));
-        for (const auto& g : ri->gauss) gauss.push_back(&g);
+        for (const auto& g : ri->cells) gauss.push_back(&g);
       } else {
         for (const auto& name : names) {
-          const GaussField* g = nullptr;
-          for (const auto& x : ri->gauss)
+          const CellField* g = nullptr;
+          for (const auto& x : ri->cells)
             if (x.name == name) g = &x;
           if (g) {
             if (!textFormat)
@@ -170,7 +170,7 @@ Item resolve(const Keywords& occ, bool textFormat) {
         }
       }
       item.instants.push_back(std::move(fi));
-      item.gauss.push_back(std::move(gauss));
+      item.cellFields.push_back(std::move(gauss));
     }
   } else {
     item.meshOnly = true;
@@ -227,7 +227,7 @@ void printNodalField(std::ostream& out, const mesh::Mesh& m, const mesh::NodalFi
   }
 }
 
-void printGaussField(std::ostream& out, const mesh::Mesh& m, const GaussField& g, const std::vector<int>& cells) {
+void printGaussField(std::ostream& out, const mesh::Mesh& m, const CellField& g, const std::vector<int>& cells) {
   std::set<int> keep(cells.begin(), cells.end());
   const std::size_t nc = g.components.size();
   out << " MAILLE   POINT    ";
@@ -274,7 +274,7 @@ std::string textOf(const std::vector<Item>& items, const std::vector<Keywords>& 
           out << "\n CHAMP AUX NOEUDS " << name << "\n";
         printNodalField(out, *it.mesh, f, it.nodes, vmax, vmin);
       }
-      for (const GaussField* g : it.gauss[i]) {
+      for (const CellField* g : it.cellFields[i]) {
         out << "\n CHAMP AUX POINTS DE GAUSS " << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
             << "  INST " << number(fi.time) << "\n";
         printGaussField(out, *it.mesh, *g, it.cells);

@@ -66,15 +66,15 @@ ResultInstant resultInstant(const analysis::MechanicalSystem& system, const anal
   inst.nodal.push_back(nodalField("FORC_NODA", system, internalForces));
   if (terms && reactions) terms->outputFields(U, inst.nodal);
   if (withStresses) {
-    GaussField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, system.model().cells(), {}, {}};
+    CellField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, system.model().cells(), {}, {}};
     system.gaussStresses(U, sief.offsets, sief.values);
-    inst.gauss.push_back(std::move(sief));
+    inst.cells.push_back(std::move(sief));
   }
   if (system.internalVariableCount() > 0) {
-    GaussField vari{"VARI_ELGA", {}, system.model().cells(), {}, {}};
+    CellField vari{"VARI_ELGA", {}, system.model().cells(), {}, {}};
     for (int v = 1; v <= system.internalVariableCount(); ++v) vari.components.push_back("V" + std::to_string(v));
     system.gaussVariables(vari.offsets, vari.values);
-    inst.gauss.push_back(std::move(vari));
+    inst.cells.push_back(std::move(vari));
   }
   return inst;
 }

@@ -34,7 +34,7 @@ void checkSupport(const mesh::Mesh& mesh, const std::vector<int>& support, const
 }
 
 // The L2 norm of a field at Gauss points over `cells`.
-double elgaNorm(const mesh::Mesh& mesh, const GaussFieldConcept& f, const std::vector<int>& cells,
+double elgaNorm(const mesh::Mesh& mesh, const CellFieldConcept& f, const std::vector<int>& cells,
                 const std::vector<int>& comps, const std::vector<double>& weights, const std::string& what,
                 const std::string& part) {
   std::vector<int> position(mesh.cellCount(), -1);
@@ -56,8 +56,8 @@ double elgaNorm(const mesh::Mesh& mesh, const GaussFieldConcept& f, const std::v
       throw Error("NORME: " + part + " mixes surface and edge cells (cell " + mesh.cellName(cell) +
                   "); integrate surfaces and edges separately");
     dim = g.dimension;
-    if (gaussPointsOf(f.field, static_cast<std::size_t>(k)) != g.count)
-      throw Error("NORME: the field " + what + " has " + std::to_string(gaussPointsOf(f.field, static_cast<std::size_t>(k))) +
+    if (pointsOf(f.field, static_cast<std::size_t>(k)) != g.count)
+      throw Error("NORME: the field " + what + " has " + std::to_string(pointsOf(f.field, static_cast<std::size_t>(k))) +
                   " points on cell " + mesh.cellName(cell) + "; the model integrates it with " + std::to_string(g.count));
     const double* v = f.field.values.data() + f.field.offsets[k];
     for (int q = 0; q < g.count; ++q)
@@ -71,7 +71,7 @@ double elgaNorm(const mesh::Mesh& mesh, const GaussFieldConcept& f, const std::v
 }
 
 // NORME of a field at Gauss points: one row per group.
-ConceptPtr elgaNorms(const Keywords& k, const Keywords& occ, const GaussFieldConcept& f, const model::Model& model,
+ConceptPtr elgaNorms(const Keywords& k, const Keywords& occ, const CellFieldConcept& f, const model::Model& model,
                      const std::vector<Part>& parts, const std::string& what) {
   if (f.mesh.get() != &model.mesh()) throw Error("NORME: CHAM_GD lies on another mesh than the model");
   if (const auto* e = dynamic_cast<const ElgaFieldConcept*>(&f); e && e->functionField)
@@ -143,7 +143,7 @@ ConceptPtr postElem(const Keywords& k, Session& session, ConceptPtr) {
   std::shared_ptr<NodalFieldConcept> cham;
   if (occ.has("CHAM_GD")) {
     const auto c = occ.conceptPtr("CHAM_GD");
-    if (const auto g = std::dynamic_pointer_cast<GaussFieldConcept>(c))
+    if (const auto g = std::dynamic_pointer_cast<CellFieldConcept>(c))
       return elgaNorms(k, occ, *g, *model, parts, session.nameOf(*c));
     cham = std::dynamic_pointer_cast<NodalFieldConcept>(c);
     if (!cham) throw Error("NORME: CHAM_GD " + session.nameOf(*c) + " is not a field");

@@ -27,16 +27,16 @@ const mesh::NodalField& ResultConcept::nodalField(const ResultInstant& i, const 
     if (f.name == name) return f;
     list += (list.empty() ? "" : ", ") + f.name;
   }
-  if (gaussField(i, name))
+  if (cellField(i, name))
     throw Error("NOM_CHAM='" + name + "' is a field at Gauss points, not at nodes (nodal fields at INST=" +
                 format::asterValue(i.time) + ": " + list + ")");
-  for (const auto& g : i.gauss) list += (list.empty() ? "" : ", ") + g.name;
+  for (const auto& g : i.cells) list += (list.empty() ? "" : ", ") + g.name;
   throw Error("NOM_CHAM='" + name + "' is not stored in the result at INST=" + format::asterValue(i.time) +
               " (fields: " + list + ")");
 }
 
-const GaussField* ResultConcept::gaussField(const ResultInstant& i, const std::string& name) {
-  for (const auto& g : i.gauss)
+const CellField* ResultConcept::cellField(const ResultInstant& i, const std::string& name) {
+  for (const auto& g : i.cells)
     if (g.name == name) return &g;
   return nullptr;
 }

@@ -1,8 +1,8 @@
 // Concepts holding computed fields: cham_no_sdaster (one nodal field), cham_elem
-// (one field at Gauss points) and the results evol_noli (STAT_NON_LINE's) and
-// evol_elas (MECA_STATIQUE's): nodal and Gauss point fields per instant.
-// Fields are stored per mesh node (node-major, components in order), the form
-// the MED / GMSH / VTK writers take.
+// (one field on cells: at their Gauss points, ELGA, or at their nodes, ELNO) and
+// the results evol_noli (STAT_NON_LINE's) and evol_elas (MECA_STATIQUE's): nodal
+// and cell fields per instant. Nodal fields are stored per mesh node (node-major,
+// components in order), the form the MED / GMSH / VTK writers take.
 #pragma once
 #include <memory>
 #include <string>
@@ -25,32 +25,44 @@ class NodalFieldConcept : public Concept {
   std::vector<int> support;
 };
 
-// Gauss point values per cell of the model (SIEF_ELGA): `values` holds, for
-// each cell of `cells` in order, gaussPoints[k] * components.size() numbers.
-struct GaussField {
+// Where a cell field's values sit in each cell: at its Gauss points (ELGA, the
+// model's integration points) or at its nodes, in the cell's node order (ELNO).
+enum class CellLocation { GaussPoints, Nodes };
+
+// Values per cell of the model (SIEF_ELGA, SIGM_ELNO, ...): `values` holds, for
+// each cell of `cells` in order, points(k) * components.size() numbers, point
+// after point (a point: a Gauss point, or a node of the cell).
+struct CellField {
   std::string name;
   std::vector<std::string> components;
   std::vector<int> cells;
   std::vector<int> offsets;  // into values, per cell, size cells.size()+1
   std::vector<double> values;
+  CellLocation location = CellLocation::GaussPoints;
 };
 
-// One field at Gauss points, as resu:getField('SIEF_ELGA', inst) gives it:
-// getValues() is `field.values` (cell after cell of field.cells, Gauss point after
-// Gauss point, components in the order of getComponents()).
-class GaussFieldConcept : public Concept {
+// The number of points (Gauss points or nodes) of field.cells[k].
+inline int pointsOf(const CellField& f, std::size_t k) {
+  const std::size_t nc = f.components.size();
+  return nc ? static_cast<int>((f.offsets[k + 1] - f.offsets[k]) / static_cast<int>(nc)) : 0;
+}
+
+// One field on cells, as resu:getField('SIEF_ELGA', inst) gives it:
+// getValues() is `field.values` (cell after cell of field.cells, point after
+// point, components in the order of getComponents()).
+class CellFieldConcept : public Concept {
  public:
-  GaussFieldConcept(std::shared_ptr<mesh::Mesh> m, GaussField f) : mesh(std::move(m)), field(std::move(f)) {}
+  CellFieldConcept(std::shared_ptr<mesh::Mesh> m, CellField f) : mesh(std::move(m)), field(std::move(f)) {}
   std::string typeName() const override { return "cham_elem"; }
   std::shared_ptr<mesh::Mesh> mesh;
-  GaussField field;
+  CellField field;
 };
 
 struct ResultInstant {
   int index = 0;      // NUME_ORDRE
   double time = 0.0;  // INST
   std::vector<mesh::NodalField> nodal;  // DEPL, REAC_NODA, ...
-  std::vector<GaussField> gauss;        // SIEF_ELGA
+  std::vector<CellField> cells;         // SIEF_ELGA, SIGM_ELNO, ...
   int newtonIterations = 0;
 };
 
@@ -69,8 +81,8 @@ class ResultConcept : public Concept {
   const ResultInstant& last() const;
   // A field of an instant by name; throws listing the available ones.
   static const mesh::NodalField& nodalField(const ResultInstant& i, const std::string& name);
-  // A Gauss point field of an instant, or null.
-  static const GaussField* gaussField(const ResultInstant& i, const std::string& name);
+  // A cell field (ELGA or ELNO) of an instant, or null.
+  static const CellField* cellField(const ResultInstant& i, const std::string& name);
 
  private:
   std::string type_;

@@ -15,8 +15,8 @@ Datum getField(Concept& self, const std::vector<Value>& args, Session&) {
   if (args.empty() || args[0].kind != Value::Kind::Text)
     throw Error("getField takes a field name and an instant: resu:getField('DEPL', 1.0)");
   const ResultInstant& inst = args.size() > 1 && args[1].isNumber() ? r.at(args[1].real) : r.last();
-  if (const GaussField* g = ResultConcept::gaussField(inst, args[0].text))
-    return Datum::ofConcept(std::make_shared<GaussFieldConcept>(r.model->meshPtr(), *g));
+  if (const CellField* g = ResultConcept::cellField(inst, args[0].text))
+    return Datum::ofConcept(std::make_shared<CellFieldConcept>(r.model->meshPtr(), *g));
   auto c = std::make_shared<NodalFieldConcept>(r.model->meshPtr(), ResultConcept::nodalField(inst, args[0].text));
   return Datum::ofConcept(c);
 }
@@ -56,8 +56,8 @@ RegisterMethod e1("evol_elas", "getField", getField);
 RegisterMethod e2("evol_elas", "getAccessParameters", accessParameters);
 RegisterMethod m3("cham_no_sdaster", "getValues", valuesOf<NodalFieldConcept>);
 RegisterMethod m4("cham_no_sdaster", "getComponents", componentsOf<NodalFieldConcept>);
-RegisterMethod m5("cham_elem", "getValues", valuesOf<GaussFieldConcept>);
-RegisterMethod m6("cham_elem", "getComponents", componentsOf<GaussFieldConcept>);
+RegisterMethod m5("cham_elem", "getValues", valuesOf<CellFieldConcept>);
+RegisterMethod m6("cham_elem", "getComponents", componentsOf<CellFieldConcept>);
 
 }  // namespace
 }  // namespace aster::lang

@@ -76,8 +76,8 @@ double fieldValue(const Keywords& occ, const mesh::Mesh& mesh, const mesh::Nodal
 // The value an occurrence of CHAM_ELEM designates in a field at Gauss points:
 // TYPE_TEST over every cell, point and component it carries (or NOM_CMP), or
 // GROUP_MA (one cell) + POINT + NOM_CMP.
-double gaussValue(const Keywords& occ, const GaussFieldConcept& g, const std::string& fieldName, What& what) {
-  const GaussField& f = g.field;
+double gaussValue(const Keywords& occ, const CellFieldConcept& g, const std::string& fieldName, What& what) {
+  const CellField& f = g.field;
   const mesh::Mesh& mesh = *g.mesh;
   const std::size_t nc = f.components.size();
   if (occ.has("NOEUD") || occ.has("GROUP_NO"))
@@ -111,7 +111,7 @@ double gaussValue(const Keywords& occ, const GaussFieldConcept& g, const std::st
     for (std::size_t k = 0; k < f.cells.size(); ++k)
       for (std::size_t c : comps) {
         if (!componentPresent(g, k, c)) continue;
-        for (int q = 0; q < gaussPointsOf(f, k); ++q) {
+        for (int q = 0; q < pointsOf(f, k); ++q) {
           const double v = f.values[f.offsets[k] + q * nc + c];
           sum += v;
           sumAbs += std::abs(v);
@@ -135,7 +135,7 @@ double gaussValue(const Keywords& occ, const GaussFieldConcept& g, const std::st
     throw Error(occ.path + ": the field " + fieldName + " is not defined on cell " + mesh.cellName(cell) + " (GROUP_MA " +
                 group + ")");
   const std::size_t k = static_cast<std::size_t>(it - f.cells.begin());
-  const int points = gaussPointsOf(f, k);
+  const int points = pointsOf(f, k);
   if (!occ.has("POINT"))
     throw Error(occ.path + ": POINT is missing: the Gauss point of cell " + mesh.cellName(cell) + " (1 to " +
                 std::to_string(points) + ")");
@@ -168,7 +168,7 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
   }
   for (const auto& occ : k.factor("CHAM_ELEM")) {
     const auto c = occ.conceptPtr("CHAM_GD");
-    const auto g = std::dynamic_pointer_cast<GaussFieldConcept>(c);
+    const auto g = std::dynamic_pointer_cast<CellFieldConcept>(c);
     if (!g) throw Error(occ.path + ": " + session.nameOf(*c) + " is not a field at Gauss points");
     if (const auto* e = dynamic_cast<const ElgaFieldConcept*>(g.get()); e && e->functionField)
       throw Error(occ.path + ": " + session.nameOf(*c) + " is a field of functions; evaluate it first (CREA_CHAMP OPERATION='EVAL')");
