@@ -64,7 +64,7 @@ ConceptPtr mecaStatique(const Keywords& k, Session& session, ConceptPtr) {
   const bool stresses = k.text("OPTION") == "SIEF_ELGA";
   solver.run(times, [&](const analysis::ConvergedInstant& c) {
     ResultInstant inst = resultInstant(system, nullptr, c.time, *c.U, *c.internalForces, c.reactions, stresses);
-    inst.index = static_cast<int>(result->instants.size());
+    inst.index = static_cast<int>(result->instants.size()) + 1;  // code_aster numbers MECA_STATIQUE's from 1
     result->instants.push_back(std::move(inst));
   });
 

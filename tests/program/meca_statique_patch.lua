@@ -65,10 +65,15 @@ RS = MECA_STATIQUE{MODELE = MO, CHAM_MATER = CM, EXCIT = {{CHARGE = BC}, {CHARGE
                    INST = 0.5}
 checkInstant(RS, 0.5, 'INST 0.5')
 if #RS:getAccessParameters().INST ~= 1 then error('INST = 0.5: not one instant') end
+-- As in code_aster, MECA_STATIQUE numbers its instants from 1 (STAT_NON_LINE's 0 is the initial state).
+local order = R:getAccessParameters().NUME_ORDRE
+if #order ~= 2 or order[1] ~= 1 or order[2] ~= 2 then error('NUME_ORDRE of LIST_INST: not 1, 2') end
 
 -- P3 = (2, 2): u_x = 2 ex at t = 1.
 local ex1 = ((1 - NU * NU) * SX - NU * (1 + NU) * SY) / E
 TEST_RESU{RESU = {RESULTAT = R, INST = 1.0, NOM_CHAM = 'DEPL', GROUP_NO = 'P3', NOM_CMP = 'DX',
+                  VALE_CALC = 2 * ex1, REFERENCE = 'ANALYTIQUE', VALE_REFE = 2 * ex1, PRECISION = 1e-10}}
+TEST_RESU{RESU = {RESULTAT = R, NUME_ORDRE = 2, NOM_CHAM = 'DEPL', GROUP_NO = 'P3', NOM_CMP = 'DX',
                   VALE_CALC = 2 * ex1, REFERENCE = 'ANALYTIQUE', VALE_REFE = 2 * ex1, PRECISION = 1e-10}}
 IMPR_RESU{FORMAT = 'RESULTAT', RESU = {RESULTAT = R, NOM_CHAM = 'DEPL', INST = 1.0}}
 print('PATCH: every check passed')
