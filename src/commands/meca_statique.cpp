@@ -2,14 +2,17 @@
 // producing an evol_elas (the same fields per instant as STAT_NON_LINE's evol_noli).
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "analysis/static_linear.hpp"
 #include "commands/field_concepts.hpp"
 #include "commands/function_concepts.hpp"
 #include "commands/mechanical_inputs.hpp"
 #include "commands/model_concepts.hpp"
+#include "commands/result_archive.hpp"
 #include "commands/result_concepts.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "core/number_format.hpp"
 #include "lang/operators.hpp"
@@ -62,11 +65,29 @@ ConceptPtr mecaStatique(const Keywords& k, Session& session, ConceptPtr) {
   analysis::StaticLinear solver(system, settings);
   auto result = std::make_shared<ResultConcept>(model, "evol_elas");
   const bool stresses = k.text("OPTION") == "SIEF_ELGA";
-  solver.run(times, [&](const analysis::ConvergedInstant& c) {
-    ResultInstant inst = resultInstant(system, nullptr, c.time, *c.U, *c.internalForces, c.reactions, stresses);
-    inst.index = static_cast<int>(result->instants.size()) + 1;  // code_aster numbers MECA_STATIQUE's from 1
-    result->instants.push_back(std::move(inst));
-  });
+  // Several instants go to disk as they are computed, as STAT_NON_LINE's do, so
+  // that a failure at one leaves the earlier ones (one instant: nothing to keep).
+  std::optional<ResultArchive> archive;
+  if (times.size() > 1) {
+    const std::string stem =
+        session.uniqueOutputStem(session.assignedName.empty() ? "MECA_STATIQUE" : session.assignedName);
+    archive.emplace(model->mesh(), session.outputFile(stem + ".pvd"), &session.files, "MECA_STATIQUE");
+    Messages::info("MECA_STATIQUE: each instant is written to " + archive->path().string());
+  }
+  try {
+    solver.run(times, [&](const analysis::ConvergedInstant& c) {
+      ResultInstant inst = resultInstant(system, nullptr, c.time, *c.U, *c.internalForces, c.reactions, stresses);
+      inst.index = static_cast<int>(result->instants.size()) + 1;  // code_aster numbers MECA_STATIQUE's from 1
+      if (archive) archive->add(inst);  // an instant not on disk (full disk) is not in the result either
+      result->instants.push_back(std::move(inst));
+    });
+  } catch (const Interrupted& e) {
+    if (archive) throw Interrupted(e.what() + archive->storedNote("before it"));
+    throw;
+  } catch (const Error& e) {
+    if (archive) throw Error(e.what() + archive->storedNote("before the failure"));
+    throw;
+  }
 
   const auto& st = solver.statistics();
   char buf[256];

@@ -33,8 +33,8 @@ bool isLaterOf(const std::string& name, const std::string& stem, std::string& re
 
 }  // namespace
 
-ResultArchive::ResultArchive(const mesh::Mesh& mesh, fs::path pvd, RunFiles* files)
-    : mesh_(mesh), pvd_(std::move(pvd)), files_(files) {
+ResultArchive::ResultArchive(const mesh::Mesh& mesh, fs::path pvd, RunFiles* files, std::string command)
+    : mesh_(mesh), pvd_(std::move(pvd)), files_(files), command_(std::move(command)) {
   const fs::path folder = pvd_.parent_path();
   const std::string stem = pvd_.stem().string();
   if (files_) {
@@ -74,9 +74,13 @@ ResultArchive::ResultArchive(const mesh::Mesh& mesh, fs::path pvd, RunFiles* fil
     std::string list;
     for (std::size_t i = 0; i < removed.size() && i < 3; ++i) list += (i ? ", " : "") + removed[i];
     if (removed.size() > 3) list += ", ...";
-    Messages::info("STAT_NON_LINE: " + std::to_string(removed.size()) + " file(s) an earlier run wrote for " + name +
+    Messages::info(command_ + ": " + std::to_string(removed.size()) + " file(s) an earlier run wrote for " + name +
                    " removed from " + folder.string() + " (" + list + ")");
   }
+}
+
+std::string ResultArchive::storedNote(const std::string& when) const {
+  return "; " + std::to_string(stored()) + " instant(s) were stored " + when + ", in " + pvd_.string();
 }
 
 void ResultArchive::add(const ResultInstant& instant) {

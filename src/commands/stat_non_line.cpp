@@ -230,15 +230,10 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   // Every instant goes to disk as soon as it is in the result.
   const std::string stem = session.uniqueOutputStem(session.assignedName.empty() ? "STAT_NON_LINE" : session.assignedName);
   ResultArchive archive(mesh, session.outputFile(stem + ".pvd"), &session.files);
-  // The count is what the .pvd on disk lists.
-  auto stored = [&](const char* when) {
-    return "; " + std::to_string(archive.stored()) + " instant(s) were stored " + when + ", in " +
-           archive.path().string();
-  };
   try {
     for (const auto& inst : result->instants) archive.add(inst);
   } catch (const Error& e) {
-    throw Error(e.what() + stored("before the failure"));
+    throw Error(e.what() + archive.storedNote("before the failure"));
   }
   Messages::info("STAT_NON_LINE: each converged instant is written to " + archive.path().string());
 
@@ -253,10 +248,10 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   try {
     newtonSolver.run(U, times, store);
   } catch (const Interrupted& e) {
-    throw Interrupted(e.what() + stored("before it"));
+    throw Interrupted(e.what() + archive.storedNote("before it"));
   } catch (const Error& e) {
     // The converged instants stay in the result; the study stops here.
-    throw Error(e.what() + stored("before the failure"));
+    throw Error(e.what() + archive.storedNote("before the failure"));
   }
   reportStatistics(newtonSolver, settings, times.size() - 1, k.integer("INFO"));
   return result;
