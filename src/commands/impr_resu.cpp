@@ -230,7 +230,8 @@ void printNodalField(std::ostream& out, const mesh::Mesh& m, const mesh::NodalFi
 void printGaussField(std::ostream& out, const mesh::Mesh& m, const CellField& g, const std::vector<int>& cells) {
   std::set<int> keep(cells.begin(), cells.end());
   const std::size_t nc = g.components.size();
-  out << " MAILLE   POINT    ";
+  const bool atNodes = g.location == CellLocation::Nodes;
+  out << (atNodes ? " MAILLE   NOEUD    " : " MAILLE   POINT    ");
   for (const auto& c : g.components) {
     std::string h = " " + c;
     h.resize(std::max<std::size_t>(h.size(), 15), ' ');
@@ -244,7 +245,7 @@ void printGaussField(std::ostream& out, const mesh::Mesh& m, const CellField& g,
     for (int p = 0; p < points; ++p) {
       std::string name = m.cellName(g.cells[k]);
       name.resize(std::max<std::size_t>(name.size(), 8), ' ');
-      std::string point = std::to_string(p + 1);
+      std::string point = atNodes ? m.nodeName(m.cellNodes(g.cells[k])[p]) : std::to_string(p + 1);
       point.resize(std::max<std::size_t>(point.size(), 5), ' ');
       out << " " << name << " " << point << "    ";
       for (std::size_t c = 0; c < nc; ++c) out << " " << number(g.values[begin + p * nc + c]) << "  ";
@@ -275,7 +276,8 @@ std::string textOf(const std::vector<Item>& items, const std::vector<Keywords>& 
         printNodalField(out, *it.mesh, f, it.nodes, vmax, vmin);
       }
       for (const CellField* g : it.cellFields[i]) {
-        out << "\n CHAMP AUX POINTS DE GAUSS " << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
+        out << (g->location == CellLocation::Nodes ? "\n CHAMP PAR ELEMENT AUX NOEUDS " : "\n CHAMP AUX POINTS DE GAUSS ")
+            << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
             << "  INST " << number(fi.time) << "\n";
         printGaussField(out, *it.mesh, *g, it.cells);
       }

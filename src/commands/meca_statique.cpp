@@ -61,6 +61,7 @@ ConceptPtr mecaStatique(const Keywords& k, Session& session, ConceptPtr) {
   analysis::MechanicalSystem system(problem);
   analysis::StaticLinear solver(system, settings);
   auto result = std::make_shared<ResultConcept>(model, "evol_elas");
+  result->materials = problem.materials;
   const bool stresses = k.text("OPTION") == "SIEF_ELGA";
   solver.run(times, [&](const analysis::ConvergedInstant& c) {
     ResultInstant inst = resultInstant(system, nullptr, c.time, *c.U, *c.internalForces, c.reactions, stresses);

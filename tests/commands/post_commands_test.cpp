@@ -240,12 +240,14 @@ IMPR_FONCTION{FORMAT='PNG', UNITE=29, PENTE='OUI', ECHELLE_X='LOG', ECHELLE_Y='L
 }
 
 TEST(PostCommands, ClearErrors) {
-  // ELNO fields are not built: a clear message, not a stub.
+  // ELNO fields are extracted from results only: AFFE of one is refused clearly.
   auto r = run("err1", R"(
 CH = CREA_CHAMP{TYPE_CHAM='ELNO_NEUT_R', OPERATION='AFFE', MODELE=MODE, AFFE={TOUT='OUI', NOM_CMP={'X1'}, VALE={1.0}}}
 )");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("TYPE_CHAM='ELNO_NEUT_R': fields at the nodes of cells (ELNO) are not available"), std::string::npos)
+  EXPECT_NE(r.err.find("TYPE_CHAM='ELNO_NEUT_R': fields at the nodes of cells (ELNO) are made by OPERATION='EXTR' "
+                       "from a result only"),
+            std::string::npos)
       << r.err;
   r = run("err2", R"(
 GEOM = CREA_CHAMP{TYPE_CHAM='NOEU_DEPL_R', OPERATION='EXTR', MAILLAGE=MAIL, NOM_CHAM='GEOMETRIE'}
