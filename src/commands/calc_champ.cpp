@@ -283,7 +283,8 @@ void computeInstant(const Context& ctx, const std::set<std::string>& options, Re
         }
         if (options.count(n)) {
           std::vector<int> support;
-          storeNodal(inst, toNodal(elno, mesh, n, support), support, *ctx.model);
+          mesh::NodalField nodal = toNodal(elno, mesh, n, support);
+          storeNodal(inst, std::move(nodal), std::move(support), *ctx.model);
           done.insert(n);
         }
       }
@@ -291,7 +292,8 @@ void computeInstant(const Context& ctx, const std::set<std::string>& options, Re
         CellField eq = equivalents(elno, "SIEQ_ELNO");
         if (options.count("SIEQ_NOEU")) {
           std::vector<int> support;
-          storeNodal(inst, toNodal(eq, mesh, "SIEQ_NOEU", support), support, *ctx.model);
+          mesh::NodalField nodal = toNodal(eq, mesh, "SIEQ_NOEU", support);
+          storeNodal(inst, std::move(nodal), std::move(support), *ctx.model);
           done.insert("SIEQ_NOEU");
         }
         store(inst, std::move(eq));
@@ -312,7 +314,8 @@ void computeInstant(const Context& ctx, const std::set<std::string>& options, Re
       CellField elno = toNodes(elga, mesh, e);
       if (options.count(n)) {
         std::vector<int> support;
-        storeNodal(inst, toNodal(elno, mesh, n, support), support, *ctx.model);
+        mesh::NodalField nodal = toNodal(elno, mesh, n, support);
+        storeNodal(inst, std::move(nodal), std::move(support), *ctx.model);
         done.insert(n);
       }
       store(inst, std::move(elno));
@@ -330,7 +333,8 @@ void computeInstant(const Context& ctx, const std::set<std::string>& options, Re
     CellField elno = toNodes(restricted(*vari, ctx.keep, "VARI_ELGA"), mesh, "VARI_ELNO");
     if (options.count("VARI_NOEU")) {
       std::vector<int> support;
-      storeNodal(inst, toNodal(elno, mesh, "VARI_NOEU", support), support, *ctx.model);
+      mesh::NodalField nodal = toNodal(elno, mesh, "VARI_NOEU", support);
+      storeNodal(inst, std::move(nodal), std::move(support), *ctx.model);
       done.insert("VARI_NOEU");
     }
     store(inst, std::move(elno));

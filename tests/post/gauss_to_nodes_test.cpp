@@ -87,3 +87,16 @@ TEST(GaussToNodes, TooFewPointsAreRefused) {
   EXPECT_THROW(post::gaussToNodesMatrix(CellType::QUAD4, pts), Error);
   EXPECT_THROW(post::gaussToNodesMatrix(CellType::SEG2, pts), Error);
 }
+
+TEST(GaussToNodes, QuadraticFieldIsFittedByLeastSquaresNotInterpolated) {
+  // eta^2 at the 3x3 points (eta = -sqrt(3/5), 0, sqrt(3/5), three points each): the
+  // best bilinear fit is the constant mean 0.4 (the odd part is zero by symmetry), which
+  // every node gets, where an interpolation through the 9 points would give 1 at the corners.
+  for (CellType t : {CellType::QUAD8, CellType::QUAD9}) {
+    const auto& rule = fem::fullSurfaceRule(t);
+    std::vector<double> in(rule.size()), out(fem::cellNodeCount(t));
+    for (int q = 0; q < rule.size(); ++q) in[q] = rule.points[q](1) * rule.points[q](1);
+    post::extrapolateToNodes(post::modelGaussToNodes(t), in.data(), 1, out.data());
+    for (double v : out) EXPECT_NEAR(v, 0.4, 1e-13) << fem::cellName(t);
+  }
+}
