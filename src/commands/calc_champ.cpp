@@ -250,7 +250,8 @@ bool asked(const std::set<std::string>& options, std::initializer_list<const cha
   return false;
 }
 
-// Computes the options at one instant; returns the names of the fields it stored.
+// Computes the options at one instant: `done` receives the names of the fields
+// stored, `notes` what was asked for and left absent.
 void computeInstant(const Context& ctx, const std::set<std::string>& options, ResultInstant& inst,
                     std::set<std::string>& done, std::vector<std::string>& notes) {
   const auto& mesh = ctx.model->mesh();
@@ -267,10 +268,21 @@ void computeInstant(const Context& ctx, const std::set<std::string>& options, Re
         throw Error("SIEF_ELGA is not stored in the result at " + at + ": the stresses of an evol_noli are its own");
       CellField all = elasticStresses(ctx, ResultConcept::nodalField(inst, "DEPL"));
       sief = restricted(all, ctx.keep, "SIEF_ELGA");
-      if (options.count("SIEF_ELGA")) store(inst, sief), done.insert("SIEF_ELGA");
+      if (options.count("SIEF_ELGA")) {
+        store(inst, sief);
+        done.insert("SIEF_ELGA");
+      }
     }
-    if (options.count("SIGM_ELGA")) store(inst, restricted(sief, ctx.keep, "SIGM_ELGA")), done.insert("SIGM_ELGA");
-    if (options.count("SIEQ_ELGA")) store(inst, equivalents(sief, "SIEQ_ELGA")), done.insert("SIEQ_ELGA");
+    if (options.count("SIGM_ELGA")) {
+      CellField sigm = sief;
+      sigm.name = "SIGM_ELGA";
+      store(inst, std::move(sigm));
+      done.insert("SIGM_ELGA");
+    }
+    if (options.count("SIEQ_ELGA")) {
+      store(inst, equivalents(sief, "SIEQ_ELGA"));
+      done.insert("SIEQ_ELGA");
+    }
     if (asked(options, {"SIEF_ELNO", "SIGM_ELNO", "SIEF_NOEU", "SIGM_NOEU", "SIEQ_ELNO", "SIEQ_NOEU"})) {
       const CellField elno = toNodes(sief, mesh, "SIGM_ELNO");
       for (const char* prefix : {"SIEF", "SIGM"}) {
@@ -321,7 +333,10 @@ void computeInstant(const Context& ctx, const std::set<std::string>& options, Re
       store(inst, std::move(elno));
       done.insert(e);
     }
-    if (options.count(g)) store(inst, std::move(elga)), done.insert(g);
+    if (options.count(g)) {
+      store(inst, std::move(elga));
+      done.insert(g);
+    }
   }
 
   // Internal variables.
