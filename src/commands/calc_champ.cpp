@@ -13,6 +13,7 @@
 // restricts the cells the fields are computed on (and averaged over).
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <set>
 #include <string>
 
@@ -175,6 +176,8 @@ struct Context {
   std::vector<char> keep;        // per mesh cell: in `cells`
   std::vector<int> modelIndex;   // per mesh cell: its index in model->cells(), -1 when none
   bool linearResult = false;     // evol_elas
+  // Built on first use: the elastic system that computes SIEF_ELGA when the result lacks it.
+  std::unique_ptr<analysis::MechanicalSystem> elasticSystem;
 };
 
 const model::ElasticMaterial& materialOf(const Context& ctx, int cell, const std::string& why) {
@@ -226,13 +229,16 @@ CellField strains(const Context& ctx, const mesh::NodalField& depl, post::Strain
 }
 
 // SIEF_ELGA of an evol_elas stored without it: linear elasticity at DEPL.
-CellField elasticStresses(const Context& ctx, const mesh::NodalField& depl) {
-  for (int cell : ctx.model->cells()) materialOf(ctx, cell, "SIEF_ELGA (not stored in the result)");
-  analysis::MechanicalProblem problem;
-  problem.model = ctx.model;
-  problem.materials = ctx.materials;
-  problem.kinematics.assign(ctx.model->cells().size(), mechanics::Kinematics::SmallStrain);
-  analysis::MechanicalSystem system(problem);
+CellField elasticStresses(Context& ctx, const mesh::NodalField& depl) {
+  if (!ctx.elasticSystem) {
+    for (int cell : ctx.model->cells()) materialOf(ctx, cell, "SIEF_ELGA (not stored in the result)");
+    analysis::MechanicalProblem problem;
+    problem.model = ctx.model;
+    problem.materials = ctx.materials;
+    problem.kinematics.assign(ctx.model->cells().size(), mechanics::Kinematics::SmallStrain);
+    ctx.elasticSystem = std::make_unique<analysis::MechanicalSystem>(problem);
+  }
+  const analysis::MechanicalSystem& system = *ctx.elasticSystem;
   Eigen::VectorXd U = Eigen::VectorXd::Zero(system.dofCount());
   const int cx = componentIndex(depl.components, "DX", "DEPL"), cy = componentIndex(depl.components, "DY", "DEPL");
   const std::size_t nc = depl.components.size();
@@ -252,7 +258,7 @@ bool asked(const std::set<std::string>& options, std::initializer_list<const cha
 
 // Computes the options at one instant: `done` receives the names of the fields
 // stored, `notes` what was asked for and left absent.
-void computeInstant(const Context& ctx, const std::set<std::string>& options, ResultInstant& inst,
+void computeInstant(Context& ctx, const std::set<std::string>& options, ResultInstant& inst,
                     std::set<std::string>& done, std::vector<std::string>& notes) {
   const auto& mesh = ctx.model->mesh();
   const std::string at = "NUME_ORDRE " + std::to_string(inst.index) + " (INST " + format::asterValue(inst.time) + ")";
