@@ -50,6 +50,7 @@ struct Item {
   bool isResult = false;
   std::vector<mesh::FieldInstant> instants;    // nodal fields (CHAM_GD: one instant)
   std::vector<std::vector<const CellField*>> cellFields;  // per instant (results, RESULTAT format)
+  std::vector<const ResultInstant*> resultInstants;       // per instant (results): nodal fields' supports
   std::vector<int> nodes;                      // RESULTAT format: the nodes to print
   std::vector<int> cells;                      // RESULTAT format: the cells of Gauss fields (empty: all)
 };
@@ -171,6 +172,7 @@ Item resolve(const Keywords& occ, bool textFormat) {
       }
       item.instants.push_back(std::move(fi));
       item.cellFields.push_back(std::move(gauss));
+      item.resultInstants.push_back(ri);
     }
   } else {
     item.meshOnly = true;
@@ -268,12 +270,27 @@ std::string textOf(const std::vector<Item>& items, const std::vector<Keywords>& 
     for (std::size_t i = 0; i < it.instants.size(); ++i) {
       const auto& fi = it.instants[i];
       for (const auto& f : fi.fields) {
+        // A field computed on part of the model (CALC_CHAMP's GROUP_MA) is printed where it is defined.
+        std::vector<int> nodes = it.nodes;
+        if (it.isResult) {
+          const auto& supports = it.resultInstants[i]->nodalSupport;
+          if (auto s = supports.find(f.name); s != supports.end()) {
+            if (nodes.empty()) {
+              nodes = s->second;
+            } else {
+              nodes.erase(std::remove_if(nodes.begin(), nodes.end(),
+                                         [&](int n) { return !std::binary_search(s->second.begin(), s->second.end(), n); }),
+                          nodes.end());
+            }
+            if (nodes.empty()) continue;
+          }
+        }
         if (it.isResult)
           out << "\n CHAMP AUX NOEUDS " << f.name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
               << "  INST " << number(fi.time) << "\n";
         else
           out << "\n CHAMP AUX NOEUDS " << name << "\n";
-        printNodalField(out, *it.mesh, f, it.nodes, vmax, vmin);
+        printNodalField(out, *it.mesh, f, nodes, vmax, vmin);
       }
       for (const CellField* g : it.cellFields[i]) {
         out << (g->location == CellLocation::Nodes ? "\n CHAMP PAR ELEMENT AUX NOEUDS " : "\n CHAMP AUX POINTS DE GAUSS ")
