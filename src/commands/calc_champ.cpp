@@ -274,11 +274,9 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
         throw Error("SIEF_ELGA is not stored in the result at " + at + ": the stresses of an evol_noli are its own");
       CellField all = elasticStresses(ctx, ResultConcept::nodalField(inst, "DEPL"));
       sief = restricted(all, ctx.keep, "SIEF_ELGA");
-      if (options.count("SIEF_ELGA")) {
-        store(inst, sief);
-        done.insert("SIEF_ELGA");
-      }
+      if (options.count("SIEF_ELGA")) store(inst, sief);
     }
+    if (options.count("SIEF_ELGA")) done.insert("SIEF_ELGA");  // kept as stored, or computed
     if (options.count("SIGM_ELGA")) {
       CellField sigm = sief;
       sigm.name = "SIGM_ELGA";
