@@ -3,7 +3,7 @@
 // EVAL (a field of functions at the values of parameter fields) and ASSE
 // (components of fields combined on parts of the mesh, with CUMUL and COEF_R).
 // Fields at Gauss points (ELGA_*, DISC towards them) are in elga_field.cpp;
-// ELNO fields are not available.
+// fields at the nodes of cells (ELNO_*) are extracted from results (EXTR) only.
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -121,23 +121,41 @@ ConceptPtr extr(const Keywords& k, const FieldType& type, const std::string& typ
   if (k.text("INTERPOL") != "NON")
     throw Error("INTERPOL='" + k.text("INTERPOL") + "' is not available yet: give a stored INST or NUME_ORDRE");
   const ResultInstant& inst = instantOf(*result, k);
+  const std::string expected = quantityOfField(name);
   for (const auto& g : inst.cells)
     if (g.name == name)
-      throw Error("NOM_CHAM='" + name + "' is a field at Gauss points: TYPE_CHAM='ELGA_" + name.substr(0, name.find('_')) +
-                  "_R', not " + typeCham);
+      throw Error("NOM_CHAM='" + name + "' is a field on cells: TYPE_CHAM='" +
+                  (g.location == CellLocation::Nodes ? "ELNO_" : "ELGA_") + expected + "_R', not " + typeCham);
   const mesh::NodalField& f = ResultConcept::nodalField(inst, name);
-  const std::string expected = (name == "DEPL" || name == "REAC_NODA" || name == "FORC_NODA") ? "DEPL"
-                               : (name == "SIEF_NOEU" || name == "SIGM_NOEU") ? "SIEF" : "";
   if (type.scalar != "R" || (!expected.empty() && type.quantity != expected))
     throw Error("NOM_CHAM='" + name + "' gives a NOEU_" + (expected.empty() ? std::string("..") : expected) +
                 "_R field, not " + typeCham);
   auto out = std::make_shared<NodalFieldConcept>(result->model->meshPtr(), f);
-  std::set<int> support;
-  const auto& model = *result->model;
-  for (int n = 0; n < model.mesh().nodeCount(); ++n)
-    if (model.nodeInModel(n)) support.insert(n);
-  out->support = normalisedSupport(support, model.mesh().nodeCount());
+  const auto nodes = result->nodalSupportOf(inst, name);
+  out->support = normalisedSupport(std::set<int>(nodes.begin(), nodes.end()), result->model->mesh().nodeCount());
   return out;
+}
+
+// EXTR of a field at the nodes of cells (ELNO_*_R) from a result.
+ConceptPtr extrElno(const Keywords& k, const FieldType& type, const std::string& typeCham) {
+  if (!k.has("RESULTAT"))
+    throw Error("TYPE_CHAM='" + typeCham + "': a field at the nodes of cells is extracted from a result (RESULTAT)");
+  const auto result = k.concept<ResultConcept>("RESULTAT");
+  const std::string name = k.text("NOM_CHAM");
+  if (k.text("INTERPOL") != "NON")
+    throw Error("INTERPOL='" + k.text("INTERPOL") + "' is not available yet: give a stored INST or NUME_ORDRE");
+  const ResultInstant& inst = instantOf(*result, k);
+  const CellField* g = ResultConcept::cellField(inst, name);
+  const std::string expected = quantityOfField(name);
+  if (!g) {
+    ResultConcept::nodalField(inst, name);  // throws listing the fields when absent
+    throw Error("NOM_CHAM='" + name + "' is a nodal field: TYPE_CHAM='NOEU_" + expected + "_R', not " + typeCham);
+  }
+  if (g->location != CellLocation::Nodes)
+    throw Error("NOM_CHAM='" + name + "' is a field at Gauss points: TYPE_CHAM='ELGA_" + expected + "_R', not " + typeCham);
+  if (type.scalar != "R" || type.quantity != expected)
+    throw Error("NOM_CHAM='" + name + "' gives an ELNO_" + expected + "_R field, not " + typeCham);
+  return std::make_shared<CellFieldConcept>(result->model->meshPtr(), *g);
 }
 
 ConceptPtr eval(const Keywords& k, const FieldType& type, const std::string& typeCham, Session& session) {
@@ -255,8 +273,12 @@ ConceptPtr creaChamp(const Keywords& k, Session& session, ConceptPtr) {
   const std::string typeCham = k.text("TYPE_CHAM");
   const std::string op = k.text("OPERATION");
   const FieldType type = parseType(typeCham);
+  if (type.support == "ELNO" && op != "EXTR")
+    throw Error("TYPE_CHAM='" + typeCham + "': fields at the nodes of cells (ELNO) are made by OPERATION='EXTR' from a "
+                "result only; NOEU_* and ELGA_* fields are made by '" + op + "'");
+  if (type.support == "ELNO") return extrElno(k, type, typeCham);
   if (type.support != "NOEU" && type.support != "ELGA")
-    throw Error("TYPE_CHAM='" + typeCham + "': fields at the nodes of cells (ELNO) are not available; NOEU_* and ELGA_* fields are");
+    throw Error("TYPE_CHAM='" + typeCham + "': the support " + type.support + " is not available (NOEU, ELGA, ELNO are)");
   if (op != "AFFE" && type.scalar == "F")
     throw Error("TYPE_CHAM='" + typeCham + "' (functions) is made by OPERATION='AFFE' only, not '" + op + "'");
   if (type.support == "ELGA") return creaChampElga(k, session, typeCham, type.quantity, type.scalar == "F");

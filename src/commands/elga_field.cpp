@@ -407,7 +407,10 @@ ConceptPtr extr(const Keywords& k, const std::string& typeCham, const std::strin
     throw Error("NOM_CHAM='" + name + "' is a nodal field: TYPE_CHAM='NOEU_..._R' (then OPERATION='DISC' to move it "
                 "to the Gauss points), not " + typeCham);
   }
-  const std::string expected = name.substr(0, name.find('_'));  // SIEF_ELGA -> SIEF
+  const std::string expected = quantityOfField(name);  // SIGM_ELGA -> SIEF
+  if (g->location != CellLocation::GaussPoints)
+    throw Error("NOM_CHAM='" + name + "' is a field at the nodes of cells: TYPE_CHAM='ELNO_" + expected + "_R', not " +
+                typeCham);
   if (quantity != expected) throw Error("NOM_CHAM='" + name + "' gives an ELGA_" + expected + "_R field, not " + typeCham);
   const auto& mesh = result->model->mesh();
   for (std::size_t kc = 0; kc < g->cells.size(); ++kc)

@@ -50,6 +50,7 @@ struct Item {
   bool isResult = false;
   std::vector<mesh::FieldInstant> instants;    // nodal fields (CHAM_GD: one instant)
   std::vector<std::vector<const CellField*>> cellFields;  // per instant (results, RESULTAT format)
+  std::vector<const ResultInstant*> resultInstants;       // per instant (results): nodal fields' supports
   std::vector<int> nodes;                      // RESULTAT format: the nodes to print
   std::vector<int> cells;                      // RESULTAT format: the cells of Gauss fields (empty: all)
 };
@@ -171,6 +172,7 @@ Item resolve(const Keywords& occ, bool textFormat) {
       }
       item.instants.push_back(std::move(fi));
       item.cellFields.push_back(std::move(gauss));
+      item.resultInstants.push_back(ri);
     }
   } else {
     item.meshOnly = true;
@@ -230,7 +232,8 @@ void printNodalField(std::ostream& out, const mesh::Mesh& m, const mesh::NodalFi
 void printGaussField(std::ostream& out, const mesh::Mesh& m, const CellField& g, const std::vector<int>& cells) {
   std::set<int> keep(cells.begin(), cells.end());
   const std::size_t nc = g.components.size();
-  out << " MAILLE   POINT    ";
+  const bool atNodes = g.location == CellLocation::Nodes;
+  out << (atNodes ? " MAILLE   NOEUD    " : " MAILLE   POINT    ");
   for (const auto& c : g.components) {
     std::string h = " " + c;
     h.resize(std::max<std::size_t>(h.size(), 15), ' ');
@@ -244,7 +247,7 @@ void printGaussField(std::ostream& out, const mesh::Mesh& m, const CellField& g,
     for (int p = 0; p < points; ++p) {
       std::string name = m.cellName(g.cells[k]);
       name.resize(std::max<std::size_t>(name.size(), 8), ' ');
-      std::string point = std::to_string(p + 1);
+      std::string point = atNodes ? m.nodeName(m.cellNodes(g.cells[k])[p]) : std::to_string(p + 1);
       point.resize(std::max<std::size_t>(point.size(), 5), ' ');
       out << " " << name << " " << point << "    ";
       for (std::size_t c = 0; c < nc; ++c) out << " " << number(g.values[begin + p * nc + c]) << "  ";
@@ -267,15 +270,31 @@ std::string textOf(const std::vector<Item>& items, const std::vector<Keywords>& 
     for (std::size_t i = 0; i < it.instants.size(); ++i) {
       const auto& fi = it.instants[i];
       for (const auto& f : fi.fields) {
+        // A field computed on part of the model (CALC_CHAMP's GROUP_MA) is printed where it is defined.
+        std::vector<int> nodes = it.nodes;
+        if (it.isResult) {
+          const auto& supports = it.resultInstants[i]->nodalSupport;
+          if (auto s = supports.find(f.name); s != supports.end()) {
+            if (nodes.empty()) {
+              nodes = s->second;
+            } else {
+              nodes.erase(std::remove_if(nodes.begin(), nodes.end(),
+                                         [&](int n) { return !std::binary_search(s->second.begin(), s->second.end(), n); }),
+                          nodes.end());
+            }
+            if (nodes.empty()) continue;
+          }
+        }
         if (it.isResult)
           out << "\n CHAMP AUX NOEUDS " << f.name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
               << "  INST " << number(fi.time) << "\n";
         else
           out << "\n CHAMP AUX NOEUDS " << name << "\n";
-        printNodalField(out, *it.mesh, f, it.nodes, vmax, vmin);
+        printNodalField(out, *it.mesh, f, nodes, vmax, vmin);
       }
       for (const CellField* g : it.cellFields[i]) {
-        out << "\n CHAMP AUX POINTS DE GAUSS " << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
+        out << (g->location == CellLocation::Nodes ? "\n CHAMP PAR ELEMENT AUX NOEUDS " : "\n CHAMP AUX POINTS DE GAUSS ")
+            << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
             << "  INST " << number(fi.time) << "\n";
         printGaussField(out, *it.mesh, *g, it.cells);
       }

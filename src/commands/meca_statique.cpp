@@ -64,6 +64,7 @@ ConceptPtr mecaStatique(const Keywords& k, Session& session, ConceptPtr) {
   analysis::MechanicalSystem system(problem);
   analysis::StaticLinear solver(system, settings);
   auto result = std::make_shared<ResultConcept>(model, "evol_elas");
+  result->materials = problem.materials;
   const bool stresses = k.text("OPTION") == "SIEF_ELGA";
   // Several instants go to disk as they are computed, as STAT_NON_LINE's do, so
   // that a failure at one leaves the earlier ones (one instant: nothing to keep).

@@ -28,11 +28,29 @@ const mesh::NodalField& ResultConcept::nodalField(const ResultInstant& i, const 
     list += (list.empty() ? "" : ", ") + f.name;
   }
   if (cellField(i, name))
-    throw Error("NOM_CHAM='" + name + "' is a field at Gauss points, not at nodes (nodal fields at INST=" +
+    throw Error("NOM_CHAM='" + name + "' is a field on cells (ELGA or ELNO), not at nodes (nodal fields at INST=" +
                 format::asterValue(i.time) + ": " + list + ")");
   for (const auto& g : i.cells) list += (list.empty() ? "" : ", ") + g.name;
   throw Error("NOM_CHAM='" + name + "' is not stored in the result at INST=" + format::asterValue(i.time) +
               " (fields: " + list + ")");
+}
+
+std::vector<int> ResultConcept::nodalSupportOf(const ResultInstant& i, const std::string& name) const {
+  auto it = i.nodalSupport.find(name);
+  if (it != i.nodalSupport.end()) return it->second;
+  std::vector<int> nodes;
+  for (int n = 0; n < model->mesh().nodeCount(); ++n)
+    if (model->nodeInModel(n)) nodes.push_back(n);
+  return nodes;
+}
+
+std::string quantityOfField(const std::string& name) {
+  const std::string prefix = name.substr(0, name.find('_'));
+  if (prefix == "SIEF" || prefix == "SIGM" || prefix == "SIEQ") return "SIEF";
+  if (prefix == "EPSI" || prefix == "EPSG") return "EPSI";
+  if (prefix == "VARI") return "VARI";
+  if (name == "DEPL" || name == "FORC_NODA" || name == "REAC_NODA") return "DEPL";
+  return "";
 }
 
 const CellField* ResultConcept::cellField(const ResultInstant& i, const std::string& name) {

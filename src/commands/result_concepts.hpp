@@ -4,6 +4,7 @@
 // and cell fields per instant. Nodal fields are stored per mesh node (node-major,
 // components in order), the form the MED / GMSH / VTK writers take.
 #pragma once
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "core/concept.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nodal_field.hpp"
+#include "model/material.hpp"
 #include "model/model.hpp"
 
 namespace aster::lang {
@@ -63,8 +65,16 @@ struct ResultInstant {
   double time = 0.0;  // INST
   std::vector<mesh::NodalField> nodal;  // DEPL, REAC_NODA, ...
   std::vector<CellField> cells;         // SIEF_ELGA, SIGM_ELNO, ...
+  // The nodes where a nodal field computed on part of the model (CALC_CHAMP's
+  // GROUP_MA) is defined, sorted; a field not listed is defined at every node of the model.
+  std::map<std::string, std::vector<int>> nodalSupport;
   int newtonIterations = 0;
 };
+
+// The physical quantity of a field of a result, as in TYPE_CHAM (ELNO_SIEF_R):
+// SIEF for SIEF_*, SIGM_*, SIEQ_*; EPSI for EPSI_*, EPSG_*; VARI for VARI_*; DEPL
+// for DEPL, FORC_NODA, REAC_NODA; "" for any other.
+std::string quantityOfField(const std::string& name);
 
 class ResultConcept : public Concept {
  public:
@@ -73,6 +83,8 @@ class ResultConcept : public Concept {
       : model(std::move(m)), type_(std::move(type)) {}
   std::string typeName() const override { return type_; }
   std::shared_ptr<model::Model> model;
+  // The materials the result was computed with (CALC_CHAMP's default CHAM_MATER); may be null.
+  std::shared_ptr<const model::MaterialField> materials;
   std::vector<ResultInstant> instants;
 
   // The instant closest to `time` within `precision` (relative, as code_aster's
@@ -83,6 +95,9 @@ class ResultConcept : public Concept {
   static const mesh::NodalField& nodalField(const ResultInstant& i, const std::string& name);
   // A cell field (ELGA or ELNO) of an instant, or null.
   static const CellField* cellField(const ResultInstant& i, const std::string& name);
+  // The nodes where a nodal field of an instant is defined: its nodalSupport entry,
+  // or the nodes of the model.
+  std::vector<int> nodalSupportOf(const ResultInstant& i, const std::string& name) const;
 
  private:
   std::string type_;

@@ -18,6 +18,8 @@ Datum getField(Concept& self, const std::vector<Value>& args, Session&) {
   if (const CellField* g = ResultConcept::cellField(inst, args[0].text))
     return Datum::ofConcept(std::make_shared<CellFieldConcept>(r.model->meshPtr(), *g));
   auto c = std::make_shared<NodalFieldConcept>(r.model->meshPtr(), ResultConcept::nodalField(inst, args[0].text));
+  // A field computed on part of the model (CALC_CHAMP's GROUP_MA) keeps the nodes where it is defined.
+  if (auto s = inst.nodalSupport.find(args[0].text); s != inst.nodalSupport.end()) c->support = s->second;
   return Datum::ofConcept(c);
 }
 

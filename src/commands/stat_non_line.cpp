@@ -212,6 +212,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   // The result: continued (reuse) from the initial instant, or new with the initial state.
   std::shared_ptr<ResultConcept> result =
       reuse ? std::static_pointer_cast<ResultConcept>(reuse) : std::make_shared<ResultConcept>(model);
+  result->materials = problem.materials;
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newtonSolver.unknownCount());
   setInitialUnknowns(initial, system, U);
   if (reuse) {

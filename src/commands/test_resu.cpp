@@ -1,10 +1,12 @@
-// TEST_RESU: checks values of nodal fields (CHAM_NO), of fields at Gauss points
-// (CHAM_ELEM) and of results (RESU): one node (or cell and Gauss point) and
+// TEST_RESU: checks values of nodal fields (CHAM_NO), of fields on cells
+// (CHAM_ELEM: at Gauss points, ELGA, or at cell nodes, ELNO) and of results (RESU,
+// nodal fields and fields on cells): one node (or cell and Gauss point or node) and
 // component, or TYPE_TEST over the field's support (SOMM_ABS: sum of absolute
 // values, SOMM: sum, MAX / MIN: signed extremes), all components or NOM_CMP.
 // Each check prints its .resu block and counts OK / NOOK.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "commands/check_keywords.hpp"
 #include "commands/elga_field.hpp"
@@ -73,18 +75,25 @@ double fieldValue(const Keywords& occ, const mesh::Mesh& mesh, const mesh::Nodal
   return f.values[node * f.components.size() + componentIndex(f, occ.text("NOM_CMP"), fieldName)];
 }
 
-// The value an occurrence of CHAM_ELEM designates in a field at Gauss points:
-// TYPE_TEST over every cell, point and component it carries (or NOM_CMP), or
-// GROUP_MA (one cell) + POINT + NOM_CMP.
-double gaussValue(const Keywords& occ, const CellFieldConcept& g, const std::string& fieldName, What& what) {
-  const CellField& f = g.field;
-  const mesh::Mesh& mesh = *g.mesh;
+// Whether component c of a field on cells is defined on its k-th cell.
+using Present = std::function<bool(std::size_t, std::size_t)>;
+
+// The value an occurrence designates in a field on cells (ELGA or ELNO): TYPE_TEST
+// over every cell, point and component it carries (or NOM_CMP), or one cell
+// (GROUP_MA of one cell, or MAILLE) + NOM_CMP and, at Gauss points (ELGA), POINT;
+// at the nodes of cells (ELNO), NOEUD or GROUP_NO (a node of the cell) or POINT
+// (the node's rank in the cell). SOUS_POINT may only be 1: no field has sub-points.
+double cellValue(const Keywords& occ, const CellField& f, const mesh::Mesh& mesh, const Present& present,
+                 const std::string& fieldName, What& what) {
   const std::size_t nc = f.components.size();
-  if (occ.has("NOEUD") || occ.has("GROUP_NO"))
+  const bool atNodes = f.location == CellLocation::Nodes;
+  if (occ.has("SOUS_POINT") && occ.integer("SOUS_POINT") != 1)
+    throw Error(occ.path + ": SOUS_POINT=" + std::to_string(occ.integer("SOUS_POINT")) + ": the field " + fieldName +
+                " has no sub-points (SOUS_POINT=1 only)");
+  if (!atNodes && (occ.has("NOEUD") || occ.has("GROUP_NO")))
     throw Error(occ.path + ": " + (occ.has("NOEUD") ? "NOEUD" : "GROUP_NO") +
                 " designates a node of a field at the nodes of cells (ELNO); " + fieldName +
                 " is at Gauss points: give GROUP_MA and POINT");
-  if (occ.has("SOUS_POINT")) throw Error(occ.path + ": SOUS_POINT: the field " + fieldName + " has no sub-points");
   auto index = [&](const std::string& name) {
     auto it = std::find(f.components.begin(), f.components.end(), name);
     if (it == f.components.end()) {
@@ -110,7 +119,7 @@ double gaussValue(const Keywords& occ, const CellFieldConcept& g, const std::str
     bool any = false;
     for (std::size_t k = 0; k < f.cells.size(); ++k)
       for (std::size_t c : comps) {
-        if (!componentPresent(g, k, c)) continue;
+        if (!present(k, c)) continue;
         for (int q = 0; q < pointsOf(f, k); ++q) {
           const double v = f.values[f.offsets[k] + q * nc + c];
           sum += v;
@@ -123,29 +132,65 @@ double gaussValue(const Keywords& occ, const CellFieldConcept& g, const std::str
     if (!any) throw Error(occ.path + ": TYPE_TEST='" + test + "': the field " + fieldName + " has no value to test");
     return test == "SOMM_ABS" ? sumAbs : test == "SOMM" ? sum : test == "MAX" ? mx : mn;
   }
-  const std::string group = occ.text("GROUP_MA");
-  const auto& cells = mesh.cellGroup(group);
-  if (cells.size() != 1)
-    throw Error(occ.path + ": GROUP_MA " + group + " holds " + std::to_string(cells.size()) +
-                " cells; a check needs a group of one cell");
-  const int cell = cells[0];
-  what.push_back({"GROUP_MA", group});
+  int cell = -1;
+  if (occ.has("MAILLE")) {
+    cell = mesh.cellIndex(occ.text("MAILLE"));
+    what.push_back({"MAILLE", occ.text("MAILLE")});
+  } else if (occ.has("GROUP_MA")) {
+    const std::string group = occ.text("GROUP_MA");
+    const auto& cells = mesh.cellGroup(group);
+    if (cells.size() != 1)
+      throw Error(occ.path + ": GROUP_MA " + group + " holds " + std::to_string(cells.size()) +
+                  " cells; a check needs a group of one cell");
+    cell = cells[0];
+    what.push_back({"GROUP_MA", group});
+  } else {
+    throw Error(occ.path + ": the field " + fieldName + " is on cells: give GROUP_MA or MAILLE (the cell) with " +
+                (atNodes ? "NOEUD or GROUP_NO" : "POINT") + " and NOM_CMP, or TYPE_TEST");
+  }
   auto it = std::find(f.cells.begin(), f.cells.end(), cell);
   if (it == f.cells.end())
-    throw Error(occ.path + ": the field " + fieldName + " is not defined on cell " + mesh.cellName(cell) + " (GROUP_MA " +
-                group + ")");
+    throw Error(occ.path + ": the field " + fieldName + " is not defined on cell " + mesh.cellName(cell));
   const std::size_t k = static_cast<std::size_t>(it - f.cells.begin());
   const int points = pointsOf(f, k);
-  if (!occ.has("POINT"))
-    throw Error(occ.path + ": POINT is missing: the Gauss point of cell " + mesh.cellName(cell) + " (1 to " +
-                std::to_string(points) + ")");
-  const long long point = occ.integer("POINT");
-  if (point < 1 || point > points)
-    throw Error(occ.path + ": POINT=" + std::to_string(point) + ": cell " + mesh.cellName(cell) + " has " +
-                std::to_string(points) + " Gauss points in the field " + fieldName);
-  what.push_back({"POINT", std::to_string(point)});
+  int point = 0;  // 1-based
+  if (atNodes && (occ.has("NOEUD") || occ.has("GROUP_NO"))) {
+    int node = -1;
+    if (occ.has("NOEUD")) {
+      node = mesh.nodeIndex(occ.text("NOEUD"));
+      what.push_back({"NOEUD", occ.text("NOEUD")});
+    } else {
+      const auto& g = mesh.nodeGroup(occ.text("GROUP_NO"));
+      if (g.size() != 1)
+        throw Error(occ.path + ": GROUP_NO " + occ.text("GROUP_NO") + " holds " + std::to_string(g.size()) +
+                    " nodes; a check needs a group of one node");
+      node = g[0];
+      what.push_back({"GROUP_NO", occ.text("GROUP_NO")});
+    }
+    const auto nodes = mesh.cellNodes(cell);
+    std::string list;
+    for (int a = 0; a < nodes.size(); ++a) {
+      if (nodes[a] == node) point = a + 1;
+      list += (list.empty() ? "" : ", ") + mesh.nodeName(nodes[a]);
+    }
+    if (!point)
+      throw Error(occ.path + ": node " + mesh.nodeName(node) + " is not a node of cell " + mesh.cellName(cell) +
+                  " (its nodes: " + list + ")");
+  } else {
+    if (!occ.has("POINT"))
+      throw Error(occ.path + ": POINT is missing: the " + (atNodes ? "node" : "Gauss point") + " of cell " +
+                  mesh.cellName(cell) + " (1 to " + std::to_string(points) + ")" +
+                  (atNodes ? ", or NOEUD / GROUP_NO" : ""));
+    const long long p = occ.integer("POINT");
+    if (p < 1 || p > points)
+      throw Error(occ.path + ": POINT=" + std::to_string(p) + ": cell " + mesh.cellName(cell) + " has " +
+                  std::to_string(points) + (atNodes ? " nodes" : " Gauss points") + " in the field " + fieldName);
+    point = static_cast<int>(p);
+    what.push_back({"POINT", std::to_string(point)});
+  }
+  if (!occ.has("NOM_CMP")) throw Error(occ.path + ": give NOM_CMP with the cell");
   const std::size_t c = index(occ.text("NOM_CMP"));
-  if (!componentPresent(g, k, c))
+  if (!present(k, c))
     throw Error(occ.path + ": component " + f.components[c] + " of the field " + fieldName +
                 " is not defined on cell " + mesh.cellName(cell));
   what.push_back({"NOM_CMP", occ.text("NOM_CMP")});
@@ -169,11 +214,12 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
   for (const auto& occ : k.factor("CHAM_ELEM")) {
     const auto c = occ.conceptPtr("CHAM_GD");
     const auto g = std::dynamic_pointer_cast<CellFieldConcept>(c);
-    if (!g) throw Error(occ.path + ": " + session.nameOf(*c) + " is not a field at Gauss points");
+    if (!g) throw Error(occ.path + ": " + session.nameOf(*c) + " is not a field on cells");
     if (const auto* e = dynamic_cast<const ElgaFieldConcept*>(g.get()); e && e->functionField)
       throw Error(occ.path + ": " + session.nameOf(*c) + " is a field of functions; evaluate it first (CREA_CHAMP OPERATION='EVAL')");
     What what{{"CHAM_ELEM", session.nameOf(*c)}};
-    const double v = gaussValue(occ, *g, session.nameOf(*c), what);
+    const Present present = [&](std::size_t kc, std::size_t cc) { return componentPresent(*g, kc, cc); };
+    const double v = cellValue(occ, g->field, *g->mesh, present, session.nameOf(*c), what);
     record(session, occ, v, what);
   }
   for (const auto& occ : k.factor("RESU")) {
@@ -196,15 +242,20 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
       record(session, occ, v, what);
       continue;
     }
-    if (occ.has("GROUP_MA") || occ.has("POINT"))
-      throw Error(occ.path + ": fields on cells (GROUP_MA, POINT) are not available yet");
     const std::string name = occ.text("NOM_CHAM");
     what.push_back({"NOM_CHAM", name});
     const auto& model = *r->model;
-    std::vector<int> support;
-    for (int n = 0; n < model.mesh().nodeCount(); ++n)
-      if (model.nodeInModel(n)) support.push_back(n);
-    const double v = fieldValue(occ, model.mesh(), ResultConcept::nodalField(inst, name), support, name, what);
+    if (const CellField* cf = ResultConcept::cellField(inst, name)) {
+      const Present all = [](std::size_t, std::size_t) { return true; };
+      record(session, occ, cellValue(occ, *cf, model.mesh(), all, name, what), what);
+      continue;
+    }
+    for (const char* key : {"GROUP_MA", "MAILLE", "POINT", "SOUS_POINT"})
+      if (occ.has(key))
+        throw Error(occ.path + ": " + key + " designates a cell or a point of a field on cells; NOM_CHAM='" + name +
+                    "' is a nodal field: give NOEUD or GROUP_NO");
+    const double v = fieldValue(occ, model.mesh(), ResultConcept::nodalField(inst, name),
+                                r->nodalSupportOf(inst, name), name, what);
     record(session, occ, v, what);
   }
   return nullptr;

@@ -240,12 +240,14 @@ IMPR_FONCTION{FORMAT='PNG', UNITE=29, PENTE='OUI', ECHELLE_X='LOG', ECHELLE_Y='L
 }
 
 TEST(PostCommands, ClearErrors) {
-  // ELNO fields are not built: a clear message, not a stub.
+  // ELNO fields are extracted from results only: AFFE of one is refused clearly.
   auto r = run("err1", R"(
 CH = CREA_CHAMP{TYPE_CHAM='ELNO_NEUT_R', OPERATION='AFFE', MODELE=MODE, AFFE={TOUT='OUI', NOM_CMP={'X1'}, VALE={1.0}}}
 )");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("TYPE_CHAM='ELNO_NEUT_R': fields at the nodes of cells (ELNO) are not available"), std::string::npos)
+  EXPECT_NE(r.err.find("TYPE_CHAM='ELNO_NEUT_R': fields at the nodes of cells (ELNO) are made by OPERATION='EXTR' "
+                       "from a result only"),
+            std::string::npos)
       << r.err;
   r = run("err2", R"(
 GEOM = CREA_CHAMP{TYPE_CHAM='NOEU_DEPL_R', OPERATION='EXTR', MAILLAGE=MAIL, NOM_CHAM='GEOMETRIE'}
@@ -573,4 +575,36 @@ S = CREA_CHAMP{TYPE_CHAM='ELGA_DEPL_R', OPERATION='EXTR', RESULTAT=R, NOM_CHAM='
   EXPECT_NE(bad.err.find("NOM_CHAM='DEPL' is a nodal field: TYPE_CHAM='NOEU_..._R' (then OPERATION='DISC'"),
             std::string::npos)
       << bad.err;
+}
+
+TEST(CalcChamp, ElnoFieldsPrintedReadAndDestroyed) {
+  // The unit square stretched along x: DX = 0 on GAUCHE, DY = 0 on BAS, DX = 0.01 on
+  // DROITE, D_PLAN, E = 1000, NU = 0.25: EPXX = 0.01, SIYY = 0, SIXX = E / (1 - NU^2) EPXX
+  // = 10.666..., SIZZ = NU SIXX = 2.666... everywhere. SIGM_ELNO has 8 nodes x 4 values on
+  // the one QUAD8; IMPR_RESU prints it node by node under code_aster's heading.
+  auto r = run("calc_champ_elno", R"(
+MAT = DEFI_MATERIAU{ELAS={E=1000.0, NU=0.25}}
+CM = AFFE_MATERIAU{MAILLAGE=MAIL, AFFE={TOUT='OUI', MATER=MAT}}
+BC = AFFE_CHAR_MECA{MODELE=MODE, DDL_IMPO={{GROUP_MA='GAUCHE', DX=0.0}, {GROUP_MA='BAS', DY=0.0}, {GROUP_MA='DROITE', DX=0.01}}}
+R = MECA_STATIQUE{MODELE=MODE, CHAM_MATER=CM, EXCIT={CHARGE=BC}}
+R = CALC_CHAMP{reuse=R, RESULTAT=R, CONTRAINTE={'SIGM_ELNO', 'SIGM_NOEU'}}
+F = R:getField('SIGM_ELNO', 0.0)
+assert(#F:getValues() == 32 and F:getComponents()[3] == 'SIZZ')
+C = CREA_CHAMP{TYPE_CHAM='ELNO_SIEF_R', OPERATION='EXTR', RESULTAT=R, NOM_CHAM='SIGM_ELNO'}
+TEST_RESU{CHAM_ELEM={CHAM_GD=C, TYPE_TEST='SOMM', NOM_CMP='SIZZ', VALE_CALC=8 * 0.25 * 1000 / (1 - 0.0625) * 0.01}}
+DETRUIRE{NOM={C, F}}
+IMPR_RESU{FORMAT='RESULTAT', RESU={RESULTAT=R, NOM_CHAM={'SIGM_ELNO'}}}
+)");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.ok, 1);
+  std::string text;
+  for (const auto& e : fs::recursive_directory_iterator(r.dir / "out"))
+    if (e.path().string().find(".resu.txt") != std::string::npos) text = readFile(e.path());
+  ASSERT_NE(text.find("CHAMP PAR ELEMENT AUX NOEUDS SIGM_ELNO DU RESULTAT R"), std::string::npos) << text;
+  EXPECT_NE(text.find(" MAILLE   NOEUD "), std::string::npos) << text;
+  // The first node of M6 and its four values.
+  EXPECT_NE(text.find(" M6       N1         1.06666667E+01"), std::string::npos) << text;
+  int rows = 0;
+  for (std::size_t p = text.find(" M6 "); p != std::string::npos; p = text.find(" M6 ", p + 1)) ++rows;
+  EXPECT_EQ(rows, 8) << text;
 }

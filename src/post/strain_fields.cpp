@@ -1,0 +1,44 @@
+#include "post/strain_fields.hpp"
+
+#include "fem/isoparametric.hpp"
+#include "fem/quadrature.hpp"
+
+namespace aster::post {
+namespace {
+
+template <fem::CellType T>
+void cellStrains(const double* Xp, const double* up, StrainMeasure measure, OutOfPlaneStrain zz, double* out) {
+  using C = fem::Cell<T>;
+  fem::NodeCoords<T> X;
+  fem::NodeCoords<T> u;
+  for (int a = 0; a < C::nodes; ++a)
+    for (int d = 0; d < 2; ++d) {
+      X(a, d) = Xp[2 * a + d];
+      u(a, d) = up[2 * a + d];
+    }
+  const auto& rule = fem::fullSurfaceRule(T);
+  for (int q = 0; q < rule.size(); ++q) {
+    const auto dN = C::gradients(rule.points[q]);
+    const auto j = fem::jacobian<T>(X, dN);
+    const auto dNx = fem::physicalGradients<T>(dN, j);
+    const Eigen::Matrix2d H = u.transpose() * dNx;  // H_ij = du_i/dx_j
+    Eigen::Matrix2d e = 0.5 * (H + H.transpose());
+    if (measure == StrainMeasure::GreenLagrange) e += 0.5 * H.transpose() * H;
+    double* o = out + q * kStrainComponents;
+    o[0] = e(0, 0);
+    o[1] = e(1, 1);
+    o[2] = zz.planeStress ? -zz.nu / (1 - zz.nu) * (e(0, 0) + e(1, 1)) : 0.0;
+    o[3] = e(0, 1);
+  }
+}
+
+}  // namespace
+
+void gaussStrains(fem::CellType type, const double* X, const double* u, StrainMeasure measure, OutOfPlaneStrain zz,
+                  double* out) {
+  fem::dispatchSurface(type, [&](auto tag) { cellStrains<decltype(tag)::value>(X, u, measure, zz, out); });
+}
+
+int strainPointCount(fem::CellType type) { return fem::fullSurfaceRule(type).size(); }
+
+}  // namespace aster::post

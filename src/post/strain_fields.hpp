@@ -1,0 +1,30 @@
+// Strains at the model's Gauss points of one surface cell (fem::fullSurfaceRule,
+// the points of SIEF_ELGA), from the nodal displacements: EPSI (linearized,
+// eps = sym(grad u)) or EPSG (Green-Lagrange, E = (F^T F - I) / 2, F = I + grad u),
+// components EPXX, EPYY, EPZZ, EPXY (tensor shear: half the engineering one).
+// The out-of-plane strain is the plane hypothesis's: zero in plane strain; in
+// plane stress the one that makes s_zz = 0 with isotropic elasticity,
+// EPZZ = -nu / (1 - nu) (EPXX + EPYY).
+#pragma once
+#include "fem/cell_type.hpp"
+
+namespace aster::post {
+
+enum class StrainMeasure { Linearized, GreenLagrange };
+
+inline constexpr int kStrainComponents = 4;  // EPXX, EPYY, EPZZ, EPXY
+
+struct OutOfPlaneStrain {
+  bool planeStress = false;  // false: plane strain, EPZZ = 0
+  double nu = 0.0;           // Poisson's ratio (plane stress only)
+};
+
+// X, u: (x, y) and (ux, uy) per node in the cell's node order; out receives
+// kStrainComponents values per Gauss point, point after point.
+void gaussStrains(fem::CellType type, const double* X, const double* u, StrainMeasure measure,
+                  OutOfPlaneStrain zz, double* out);
+
+// The number of Gauss points gaussStrains() fills for a cell type.
+int strainPointCount(fem::CellType type);
+
+}  // namespace aster::post

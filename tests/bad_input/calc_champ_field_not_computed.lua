@@ -1,0 +1,15 @@
+-- expect-exit: 2
+-- expect-output: <F> <TEST_RESU> .*calc_champ_field_not_computed\.lua:14: NOM_CHAM='SIGM_NOEU' is not stored in the result at INST=0 \(fields: DEPL, REAC_NODA, FORC_NODA, SIEF_ELGA, SIGM_ELNO\)
+-- TEST_RESU on a field CALC_CHAMP was not asked for (SIGM_NOEU: only SIGM_ELNO was computed).
+DEBUT{}
+DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
+MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
+MO = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
+MAT = DEFI_MATERIAU{ELAS = {E = 1000.0, NU = 0.3}}
+CM = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MAT}}
+BC = AFFE_CHAR_MECA{MODELE = MO, DDL_IMPO = {GROUP_MA = 'GAUCHE', DX = 0.0, DY = 0.0},
+                    FORCE_CONTOUR = {GROUP_MA = 'HAUT', FY = -1.0}}
+R = MECA_STATIQUE{MODELE = MO, CHAM_MATER = CM, EXCIT = {CHARGE = BC}}
+R = CALC_CHAMP{reuse = R, RESULTAT = R, CONTRAINTE = 'SIGM_ELNO'}
+TEST_RESU{RESU = {RESULTAT = R, INST = 0.0, NOM_CHAM = 'SIGM_NOEU', NOEUD = 'N5', NOM_CMP = 'SIXX', VALE_CALC = 1.0}}
+FIN{}
