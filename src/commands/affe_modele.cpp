@@ -52,6 +52,28 @@ void checkJacobians(const mesh::Mesh& mesh, const model::Model& model) {
                 "on such a cell then fails)");
 }
 
+// AXIS: r = X, so a cell of an axisymmetric model must lie in X >= 0 (nodes on
+// the axis are fine: Gauss points are interior); and AXIS is not mixed with the
+// plane modelisations (its loads are per radian).
+void checkAxisymmetric(const mesh::Mesh& mesh, const model::Model& model) {
+  if (!model.axisymmetric()) return;
+  bool plane = false;
+  for (std::size_t k = 0; k < model.cells().size(); ++k)
+    plane |= model.modelisation(static_cast<int>(k)) != model::Modelisation::Axisymmetric;
+  if (plane)
+    throw Error("MODELISATION='AXIS' is assigned to some cells and D_PLAN or C_PLAN to others: an axisymmetric "
+                "model has AXIS on every cell");
+  for (const auto* cells : {&model.cells(), &model.segments()})
+    for (int c : *cells)
+      for (int n : mesh.cellNodes(c))
+        if (mesh.node(n)(0) < 0) {
+          std::vector<std::vector<int>> groups = mesh::groupsOfEachCell(mesh);
+          throw Error("MODELISATION='AXIS': cell " + mesh::describeCell(mesh, c, groups) + " has node " +
+                      mesh.nodeName(n) + " at X = " + std::to_string(mesh.node(n)(0)) +
+                      " < 0; in AXIS, X is the radius r >= 0 (the axis is X = 0)");
+        }
+}
+
 ConceptPtr affeModele(const Keywords& k, Session&, ConceptPtr) {
   auto mesh = static_cast<MeshConcept&>(*k.conceptPtr("MAILLAGE")).mesh;
   auto m = std::make_shared<model::Model>(mesh);
@@ -65,6 +87,7 @@ ConceptPtr affeModele(const Keywords& k, Session&, ConceptPtr) {
                   " cells selected is a 2D cell (TRIA3, TRIA6, QUAD4, QUAD8, QUAD9) or a segment: no element assigned");
     info << "  " << n << " cells -> MECANIQUE " << occ.text("MODELISATION") << "\n";
   }
+  checkAxisymmetric(*mesh, *m);
   if (k.text("VERI_JACOBIEN") == "OUI") checkJacobians(*mesh, *m);
   Messages::info("AFFE_MODELE:\n" + info.str());
   return std::make_shared<ModelConcept>(m);
