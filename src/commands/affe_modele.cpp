@@ -5,6 +5,7 @@
 #include "commands/model_concepts.hpp"
 #include "commands/selection.hpp"
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "core/messages.hpp"
 #include "fem/jacobian_check.hpp"
 #include "lang/operators.hpp"
@@ -69,7 +70,7 @@ void checkAxisymmetric(const mesh::Mesh& mesh, const model::Model& model) {
         if (mesh.node(n)(0) < 0) {
           std::vector<std::vector<int>> groups = mesh::groupsOfEachCell(mesh);
           throw Error("MODELISATION='AXIS': cell " + mesh::describeCell(mesh, c, groups) + " has node " +
-                      mesh.nodeName(n) + " at X = " + std::to_string(mesh.node(n)(0)) +
+                      mesh.nodeName(n) + " at X = " + format::shortest(mesh.node(n)(0)) +
                       " < 0; in AXIS, X is the radius r >= 0 (the axis is X = 0)");
         }
 }

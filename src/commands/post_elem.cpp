@@ -125,7 +125,7 @@ ConceptPtr postElem(const Keywords& k, Session& session, ConceptPtr) {
     if (!model) model = result->model;
   }
   if (model->axisymmetric())
-    throw Error("POST_ELEM NORME: the model is axisymmetric (MODELISATION='AXIS'); aster-lite integrates the norms "
+    throw Error("NORME: the model is axisymmetric (MODELISATION='AXIS'); aster-lite integrates the norms "
                 "over the plane section only, not per radian: NORME is available in D_PLAN and C_PLAN");
   const mesh::Mesh& mesh = model->mesh();
   std::vector<Part> parts;

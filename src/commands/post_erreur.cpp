@@ -39,7 +39,7 @@ ConceptPtr postErreur(const Keywords& k, Session& session, ConceptPtr) {
   const bool relative = option.size() > 4 && option.substr(option.size() - 4) == "RELA";
   const auto model = k.concept<ModelConcept>("MODELE")->model;
   if (model->axisymmetric())
-    throw Error("POST_ERREUR: MODELE is axisymmetric (MODELISATION='AXIS'); aster-lite integrates the errors over "
+    throw Error("MODELE is axisymmetric (MODELISATION='AXIS'); aster-lite integrates the errors over "
                 "the plane section only, not per radian: POST_ERREUR takes a D_PLAN or C_PLAN model (of the same "
                 "mesh, for the norm of the section)");
   const auto c = k.conceptPtr("CHAM_GD");
