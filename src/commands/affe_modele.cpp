@@ -1,4 +1,6 @@
 // AFFE_MODELE: plane mechanical elements on the 2D cells of the mesh.
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "commands/mesh_concept.hpp"
@@ -64,10 +66,15 @@ void checkAxisymmetric(const mesh::Mesh& mesh, const model::Model& model) {
   if (plane)
     throw Error("MODELISATION='AXIS' is assigned to some cells and D_PLAN or C_PLAN to others: an axisymmetric "
                 "model has AXIS on every cell");
+  // A node meant to be on the axis may come out of a mesher at X = -1e-17: the
+  // rounding of the mesh's size is tolerated.
+  double size = 0;
+  for (int n = 0; n < mesh.nodeCount(); ++n) size = std::max(size, std::abs(mesh.node(n)(0)));
+  const double tolerance = 1e-10 * size;
   for (const auto* cells : {&model.cells(), &model.segments()})
     for (int c : *cells)
       for (int n : mesh.cellNodes(c))
-        if (mesh.node(n)(0) < 0) {
+        if (mesh.node(n)(0) < -tolerance) {
           std::vector<std::vector<int>> groups = mesh::groupsOfEachCell(mesh);
           throw Error("MODELISATION='AXIS': cell " + mesh::describeCell(mesh, c, groups) + " has node " +
                       mesh.nodeName(n) + " at X = " + format::shortest(mesh.node(n)(0)) +
