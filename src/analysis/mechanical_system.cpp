@@ -164,6 +164,8 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const AppliedLoad& applied, dou
   const model::MechanicalLoad& load = *applied.load;
   const mesh::Mesh& mesh = problem_.model->mesh();
   Eigen::VectorXd F = Eigen::VectorXd::Zero(dofCount());
+  // AXIS: loads per radian, weighted by r (FORCE_NODALE is per radian as given).
+  const bool axisymmetric = problem_.model->axisymmetric();
   double X[2 * kMaxNodes];
   auto scatter = [&](int cell, const double* fe) {
     const auto nodes = mesh.cellNodes(cell);
@@ -185,7 +187,7 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const AppliedLoad& applied, dou
       fem::dispatchEdge(fem::referenceCell(mesh.cellType(c), "loads"), [&](auto tag) {
         constexpr fem::CellType T = decltype(tag)::value;
         const Eigen::Map<const fem::EdgeCoords<T>> x(X);
-        const auto fe = mechanics::deadEdgeTraction<T>(x, traction);
+        const auto fe = mechanics::deadEdgeTraction<T>(x, traction, axisymmetric);
         scatter(c, fe.data());
       });
     }
@@ -201,7 +203,7 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const AppliedLoad& applied, dou
       fem::dispatchSurface(fem::referenceCell(mesh.cellType(c), "loads"), [&](auto tag) {
         constexpr fem::CellType T = decltype(tag)::value;
         const Eigen::Map<const fem::NodeCoords<T>> x(X);
-        const auto fe = mechanics::bodyForce<T>(x, force);
+        const auto fe = mechanics::bodyForce<T>(x, force, axisymmetric);
         scatter(c, fe.data());
       });
     }
@@ -219,7 +221,7 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const AppliedLoad& applied, dou
           constexpr fem::CellType T = decltype(tag)::value;
           const Eigen::Map<const fem::EdgeCoords<T>> x(X);
           mechanics::EdgeVector<T> f;
-          mechanics::followerPressure<T>(x, mechanics::EdgeVector<T>::Zero(), pressure, &f, nullptr);
+          mechanics::followerPressure<T>(x, mechanics::EdgeVector<T>::Zero(), pressure, &f, nullptr, axisymmetric);
           scatter(c, f.data());
         });
       }
@@ -314,6 +316,7 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
   }
   double X[2 * kMaxNodes];
   addDeadLoads(t, fext);
+  const bool axisymmetric = problem_.model->axisymmetric();
   const mesh::Mesh& mesh = problem_.model->mesh();
   for (const Edge& e : pressureEdges_) {
     gatherCoords(e.meshCell, X);
@@ -330,7 +333,7 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
       mechanics::EdgeVector<T> ue, f;
       mechanics::EdgeMatrix<T> dfdu;
       for (int i = 0; i < nd; ++i) ue(i) = U(d[i]);
-      mechanics::followerPressure<T>(x, ue, pressure, &f, K ? &dfdu : nullptr);
+      mechanics::followerPressure<T>(x, ue, pressure, &f, K ? &dfdu : nullptr, axisymmetric);
       for (int i = 0; i < nd; ++i) fext(d[i]) += f(i);
       if (K) {
         mechanics::EdgeMatrix<T> minus = -dfdu;

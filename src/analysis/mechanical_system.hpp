@@ -92,13 +92,15 @@ class MechanicalSystem {
   // once per converged step. Free for laws without history (ELAS).
   void acceptState(const Eigen::VectorXd& U);
 
-  // SIEF_ELGA at U: per cell of the model, 4 components per Gauss point.
+  // SIEF_ELGA at U: per cell of the model, 4 components per Gauss point (SIZZ the
+  // hoop stress in AXIS).
   void gaussStresses(const Eigen::VectorXd& U, std::vector<int>& offsets, std::vector<double>& values) const;
   // VARI_ELGA of the accepted state: internalVariableCount() values (V1, V2, ...) per
   // Gauss point of every cell of the model, zero past a cell's own law's count.
   int internalVariableCount() const { return maxVariables_; }
   void gaussVariables(std::vector<int>& offsets, std::vector<double>& values) const;
-  // Gauss point positions and weights*detJ in the reference configuration.
+  // Gauss point positions and weights*detJ in the reference configuration (times r
+  // in AXIS: per radian).
   void gaussGeometry(std::vector<int>& offsets, std::vector<double>& xy, std::vector<double>& weights) const;
 
  private:

@@ -1,10 +1,13 @@
 // AFFE_MODELE: plane mechanical elements on the 2D cells of the mesh.
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "commands/mesh_concept.hpp"
 #include "commands/model_concepts.hpp"
 #include "commands/selection.hpp"
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "core/messages.hpp"
 #include "fem/jacobian_check.hpp"
 #include "lang/operators.hpp"
@@ -52,6 +55,33 @@ void checkJacobians(const mesh::Mesh& mesh, const model::Model& model) {
                 "on such a cell then fails)");
 }
 
+// AXIS: r = X, so a cell of an axisymmetric model must lie in X >= 0 (nodes on
+// the axis are fine: Gauss points are interior); and AXIS is not mixed with the
+// plane modelisations (its loads are per radian).
+void checkAxisymmetric(const mesh::Mesh& mesh, const model::Model& model) {
+  if (!model.axisymmetric()) return;
+  bool plane = false;
+  for (std::size_t k = 0; k < model.cells().size(); ++k)
+    plane |= model.modelisation(static_cast<int>(k)) != model::Modelisation::Axisymmetric;
+  if (plane)
+    throw Error("MODELISATION='AXIS' is assigned to some cells and D_PLAN or C_PLAN to others: an axisymmetric "
+                "model has AXIS on every cell");
+  // A node meant to be on the axis may come out of a mesher at X = -1e-17: the
+  // rounding of the mesh's size is tolerated.
+  double size = 0;
+  for (int n = 0; n < mesh.nodeCount(); ++n) size = std::max(size, std::abs(mesh.node(n)(0)));
+  const double tolerance = 1e-10 * size;
+  for (const auto* cells : {&model.cells(), &model.segments()})
+    for (int c : *cells)
+      for (int n : mesh.cellNodes(c))
+        if (mesh.node(n)(0) < -tolerance) {
+          std::vector<std::vector<int>> groups = mesh::groupsOfEachCell(mesh);
+          throw Error("MODELISATION='AXIS': cell " + mesh::describeCell(mesh, c, groups) + " has node " +
+                      mesh.nodeName(n) + " at X = " + format::shortest(mesh.node(n)(0)) +
+                      " < 0; in AXIS, X is the radius r >= 0 (the axis is X = 0)");
+        }
+}
+
 ConceptPtr affeModele(const Keywords& k, Session&, ConceptPtr) {
   auto mesh = static_cast<MeshConcept&>(*k.conceptPtr("MAILLAGE")).mesh;
   auto m = std::make_shared<model::Model>(mesh);
@@ -65,6 +95,7 @@ ConceptPtr affeModele(const Keywords& k, Session&, ConceptPtr) {
                   " cells selected is a 2D cell (TRIA3, TRIA6, QUAD4, QUAD8, QUAD9) or a segment: no element assigned");
     info << "  " << n << " cells -> MECANIQUE " << occ.text("MODELISATION") << "\n";
   }
+  checkAxisymmetric(*mesh, *m);
   if (k.text("VERI_JACOBIEN") == "OUI") checkJacobians(*mesh, *m);
   Messages::info("AFFE_MODELE:\n" + info.str());
   return std::make_shared<ModelConcept>(m);

@@ -41,6 +41,9 @@ auto ofGroups(const Keywords& z, const std::string& key, F&& lookup) {
 ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   auto model = static_cast<ModelConcept&>(*k.conceptPtr("MODELE")).model;
   const auto& mesh = model->mesh();
+  if (model->axisymmetric())
+    throw Error("the model is axisymmetric (MODELISATION='AXIS'), and aster-lite's contact terms "
+                "are plane (not weighted by the radius): contact is available in D_PLAN and C_PLAN only");
   if (k.text("FROTTEMENT") != "SANS")
     throw Error("FROTTEMENT='" + k.text("FROTTEMENT") + "': aster-lite's contact is frictionless (FROTTEMENT='SANS')");
   analysis::ContactSettings settings;

@@ -124,6 +124,9 @@ ConceptPtr postElem(const Keywords& k, Session& session, ConceptPtr) {
     result = occ.concept<ResultConcept>("RESULTAT");
     if (!model) model = result->model;
   }
+  if (model->axisymmetric())
+    throw Error("NORME: the model is axisymmetric (MODELISATION='AXIS'); aster-lite integrates the norms "
+                "over the plane section only, not per radian: NORME is available in D_PLAN and C_PLAN");
   const mesh::Mesh& mesh = model->mesh();
   std::vector<Part> parts;
   if (occ.has("TOUT")) {

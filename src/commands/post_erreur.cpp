@@ -38,6 +38,10 @@ ConceptPtr postErreur(const Keywords& k, Session& session, ConceptPtr) {
   const bool lagr = option.rfind("LAGR", 0) == 0;
   const bool relative = option.size() > 4 && option.substr(option.size() - 4) == "RELA";
   const auto model = k.concept<ModelConcept>("MODELE")->model;
+  if (model->axisymmetric())
+    throw Error("MODELE is axisymmetric (MODELISATION='AXIS'); aster-lite integrates the errors over "
+                "the plane section only, not per radian: POST_ERREUR takes a D_PLAN or C_PLAN model (of the same "
+                "mesh, for the norm of the section)");
   const auto c = k.conceptPtr("CHAM_GD");
   const auto cham = std::dynamic_pointer_cast<NodalFieldConcept>(c);
   if (!cham || isFunctionField(*cham)) throw Error("CHAM_GD " + session.nameOf(*c) + " is not a field of real nodal values");

@@ -203,8 +203,12 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   // Build: the system, the contact terms, the driver and its convergence table.
   analysis::MechanicalSystem system(problem);
   std::unique_ptr<analysis::AdditionalTerms> terms;
-  if (const auto contact = k.concept<ContactConcept>("CONTACT"))
+  if (const auto contact = k.concept<ContactConcept>("CONTACT")) {
+    if (model->axisymmetric())
+      throw Error("CONTACT: MODELE is axisymmetric (MODELISATION='AXIS'); the contact of DEFI_CONTACT is plane (not "
+                  "weighted by the radius): contact is available in D_PLAN and C_PLAN only");
     terms = analysis::makeContactTerms(system, contact->zones, contact->settings);
+  }
   analysis::StaticNonlinear newtonSolver(system, terms.get(), settings);
   analysis::ConvergenceTable table(terms != nullptr);
   if (k.integer("INFO") >= 1) newtonSolver.addObserver(table);

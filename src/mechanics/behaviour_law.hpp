@@ -1,31 +1,51 @@
 // A behaviour law (code_aster's COMPORTEMENT/RELATION) at one Gauss point of a
-// plane element: from the strain measure at the end of the increment, its
-// increment, the stress and internal variables of the last accepted state and
-// the law's own parameters, it computes the new stress, the new internal
-// variables and the consistent tangent dS/dE. The element (plane_element.hpp)
-// owns the kinematics: which strain measure (PETIT's eps or GROT_GDEP's
-// Green-Lagrange E, modelling.hpp), its variation and the geometric stiffness.
-// The law sees only the in-plane strain and the plane hypothesis it was built
-// for (a C_PLAN law makes s_zz = 0 itself).
+// plane or axisymmetric element: from the strain measure at the end of the
+// increment, its increment, the stress and internal variables of the last
+// accepted state and the law's own parameters, it computes the new stress, the
+// new internal variables and the consistent tangent dS/dE. The element
+// (plane_element.hpp) owns the kinematics: which strain measure (PETIT's eps or
+// GROT_GDEP's Green-Lagrange E, modelling.hpp), its variation and the geometric
+// stiffness.
+//
+// Strains and stresses have four components, xx, yy, zz, xy (zz the
+// out-of-plane direction: the thickness in D_PLAN/C_PLAN, the hoop direction in
+// AXIS), so that a 3D law (plasticity) sees the whole state:
+//  - D_PLAN: the element gives strainZZ = 0; the law returns stressZZ and the
+//    full 4x4 tangent (the element uses its in-plane part).
+//  - AXIS: the element gives the hoop strain (u_r/r, or E_tt = (F_tt^2 - 1)/2);
+//    the element uses the full 4x4 tangent.
+//  - C_PLAN: strainZZ is unknown to the element (given as 0, not to be read);
+//    the law finds it from s_zz = 0 itself, returns stressZZ = 0 and the tangent
+//    condensed on s_zz = 0 (its zz row and column zero), and may report the zz
+//    strain it found in strainZZ.
+// A law is built for one hypothesis (IsotropicElasticity takes it).
 //
 // A law is one class derived from BehaviourLaw; the element kernels run it
 // through the virtual integrate() below. The element templates take the law as
 // a parameter, so a final class with an inline integrate() can also be compiled
-// into them: IsotropicElasticity (ELAS) is, AVX2 build included
-// (element_kernel.cpp picks it, plane_element.cpp instantiates it).
+// into them: IsotropicElasticity (ELAS) is, AVX2 build included, for D_PLAN and
+// C_PLAN (element_kernel.cpp picks it, plane_element.cpp instantiates it); AXIS
+// elements call the law's 4-component integrate().
 #pragma once
 #include <Eigen/Core>
 
+#include "mechanics/modelling.hpp"
+
 namespace aster::mechanics {
 
-// dS/dE in Voigt order: strains (E11, E22, 2 E12) -> stresses (S11, S22, S12).
-// The element assembles one triangle of its matrix and mirrors it, so a law's
-// tangent must be symmetric (hyperelastic, associated flow).
-using VoigtTangent = Eigen::Matrix3d;
+// dS/dE in Voigt order: strains (E11, E22, E33, 2 E12) -> stresses (S11, S22,
+// S33, S12), 3 the out-of-plane direction. The element assembles one triangle of
+// its matrix and mirrors it, so a law's tangent must be symmetric (hyperelastic,
+// associated flow).
+using VoigtTangent = Eigen::Matrix4d;
+// Voigt indices.
+enum VoigtIndex { kXX = 0, kYY = 1, kZZ = 2, kXY = 3 };
 
 struct LawInput {
   Eigen::Matrix2d strain;           // eps (PETIT) or E (GROT_GDEP) at the end of the increment
+  double strainZZ = 0.0;            // out of plane: 0 (D_PLAN), hoop (AXIS), not given (C_PLAN)
   Eigen::Matrix2d strainIncrement;  // from the last accepted state
+  double strainIncrementZZ = 0.0;
   const double* previousStress = nullptr;     // SIXX, SIYY, SIZZ, SIXY of the last accepted state
   const double* previousVariables = nullptr;  // internalVariableCount() values (V1, V2, ...)
 };
@@ -33,7 +53,8 @@ struct LawInput {
 template <class Tangent>
 struct LawOutput {
   Eigen::Matrix2d stress;       // in-plane sigma (PETIT) or S (GROT_GDEP)
-  double stressZZ = 0.0;        // the out-of-plane component
+  double stressZZ = 0.0;        // the out-of-plane component (0 in C_PLAN)
+  double strainZZ = 0.0;        // C_PLAN: the out-of-plane strain making s_zz = 0, when the law reports it
   double* variables = nullptr;  // internalVariableCount() values, written by the law
   Tangent tangent;              // written when asked for
 };
@@ -46,6 +67,8 @@ class BehaviourLaw {
   static constexpr bool kUsesHistory = true;
 
   virtual ~BehaviourLaw();
+  // The hypothesis the law was built for: the element's formulation (AXIS) follows it.
+  virtual PlaneHypothesis hypothesis() const = 0;
   // Internal variables per Gauss point (VARI_ELGA's V1, V2, ...).
   virtual int internalVariableCount() const = 0;
   // Throws aster::Error for a state the law cannot integrate (the step is then cut).

@@ -25,16 +25,19 @@ class ElementKernel {
   // internal variables, gaussPoints() * internalVariables() (null when none).
   virtual void internalForce(const double* X, const double* u, const ElementHistory& history, double* variables,
                              double* f, double* K) const = 0;
-  // 4 values (SIXX, SIYY, SIZZ, SIXY) per Gauss point, and the new internal variables.
+  // 4 values (SIXX, SIYY, SIZZ, SIXY; SIZZ the hoop stress in AXIS) per Gauss point,
+  // and the new internal variables.
   virtual void stresses(const double* X, const double* u, const ElementHistory& history, double* out,
                         double* variables) const = 0;
-  // Gauss point coordinates (x, y per point) and weight*detJ; either may be null.
+  // Gauss point coordinates (x, y per point) and weight*detJ (times x in AXIS: per
+  // radian); either may be null.
   virtual void gaussGeometry(const double* X, double* xy, double* weightDet) const = 0;
 };
 
 // An IsotropicElasticity law runs the kernels it is inlined into (the AVX2 build
-// included); any other law through its virtual integrate(). Throws aster::Error
-// for a cell type without a plane element.
+// included; in AXIS the baseline 4-component path); any other law through its
+// virtual integrate(). The law's hypothesis() makes the element axisymmetric or
+// not. Throws aster::Error for a cell type without a plane element.
 std::unique_ptr<ElementKernel> makePlaneKernel(mesh::CellType type, std::shared_ptr<const BehaviourLaw> law,
                                                Kinematics kinematics);
 

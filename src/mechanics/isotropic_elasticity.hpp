@@ -3,7 +3,11 @@
 // kinematics:
 //   stress = lambda' tr(e) I + 2 mu e  on the in-plane 2x2 strain e,
 // with lambda' = lambda for plane strain (D_PLAN) and
-// lambda' = 2 lambda mu / (lambda + 2 mu) for plane stress (C_PLAN, sigma_zz = 0).
+// lambda' = 2 lambda mu / (lambda + 2 mu) for plane stress (C_PLAN, sigma_zz = 0;
+// with GROT_GDEP this is Saint Venant-Kirchhoff with S_zz = 0, whose E_zz =
+// -lambda/(lambda + 2 mu) tr(E) is linear: the condensed law is exact). In AXIS the
+// zz strain is the hoop strain e_zz, given: stress = lambda (tr e + e_zz) I + 2 mu e,
+// s_zz = lambda (tr e + e_zz) + 2 mu e_zz (the 4-component integrate() only).
 // The program's one source of the Lame constants.
 #pragma once
 #include <Eigen/Core>
@@ -30,7 +34,7 @@ class IsotropicElasticity final : public BehaviourLaw {
 
   double young() const { return young_; }
   double poisson() const { return poisson_; }
-  PlaneHypothesis hypothesis() const { return hypothesis_; }
+  PlaneHypothesis hypothesis() const override { return hypothesis_; }
   double lambda() const { return lambda_; }            // 3D Lame constants
   double mu() const { return mu_; }
   double planeLambda() const { return planeLambda_; }  // lambda' above
@@ -41,13 +45,14 @@ class IsotropicElasticity final : public BehaviourLaw {
   }
   // The zz stress: lambda tr(e) in plane strain (e_zz = 0), zero in plane stress.
   double outOfPlaneStress(const Eigen::Matrix2d& strain) const {
-    return hypothesis_ == PlaneHypothesis::PlaneStrain ? lambda_ * strain.trace() : 0.0;
+    return hypothesis_ == PlaneHypothesis::PlaneStress ? 0.0 : lambda_ * strain.trace();
   }
-  // Voigt matrix for (e_xx, e_yy, 2 e_xy) -> (s_xx, s_yy, s_xy).
-  const Eigen::Matrix3d& voigt() const { return voigt_; }
+  // Voigt matrix for (e_xx, e_yy, e_zz, 2 e_xy) -> (s_xx, s_yy, s_zz, s_xy); in
+  // C_PLAN condensed on s_zz = 0 (zz row and column zero).
+  const VoigtTangent& voigt() const { return voigt_; }
 
   int internalVariableCount() const override { return 0; }
-  // The form the element kernels inline.
+  // The form the element kernels inline, for D_PLAN and C_PLAN (e_zz = 0 or not read).
   void integrate(const LawInput& in, LawOutput<IsotropicTangent>& out, bool withTangent) const {
     out.stress = stress(in.strain);
     out.stressZZ = outOfPlaneStress(in.strain);
@@ -59,7 +64,7 @@ class IsotropicElasticity final : public BehaviourLaw {
   double young_, poisson_;
   PlaneHypothesis hypothesis_;
   double lambda_, mu_, planeLambda_;
-  Eigen::Matrix3d voigt_;
+  VoigtTangent voigt_;
 };
 
 }  // namespace aster::mechanics

@@ -6,6 +6,9 @@
 //   PRES_REP: follower pressure p(X) on the deformed edge, f = -int p n ds
 //     (current configuration; n = (dy, -dx)/|.| walking node 1 -> node 2, so a
 //     positive p pushes against the outward normal of a counterclockwise boundary).
+// AXIS (axisymmetric = true; r = X, the axis along Y): per radian, each integral
+// weighted by the radius: the reference X for dead loads, the current x = X + u_x
+// for follower pressures (whose tangent then has the term of dr/du).
 #pragma once
 #include <Eigen/Core>
 
@@ -35,9 +38,9 @@ inline const fem::QuadratureRule<2>& defaultSurfaceLoadRule(CellType t) {
   }
 }
 
-// Dead edge traction: f_a = int N_a t(X) |dX/dxi| dxi.
+// Dead edge traction: f_a = int N_a t(X) |dX/dxi| (r) dxi.
 template <CellType T, class Traction>
-EdgeVector<T> deadEdgeTraction(const fem::EdgeCoords<T>& X, const Traction& traction,
+EdgeVector<T> deadEdgeTraction(const fem::EdgeCoords<T>& X, const Traction& traction, bool axisymmetric = false,
                                int points = defaultEdgeLoadPoints(T)) {
   using C = fem::Cell<T>;
   const auto& rule = fem::gaussLegendre(points);
@@ -45,36 +48,41 @@ EdgeVector<T> deadEdgeTraction(const fem::EdgeCoords<T>& X, const Traction& trac
   for (int q = 0; q < rule.size(); ++q) {
     const auto N = C::values(rule.points[q]);
     const Eigen::Vector2d dX = X.transpose() * C::gradients(rule.points[q]);
-    const Eigen::Vector2d t = traction(Eigen::Vector2d(X.transpose() * N));
-    const double w = rule.weights[q] * dX.norm();
+    const Eigen::Vector2d x = X.transpose() * N;
+    const Eigen::Vector2d t = traction(x);
+    const double w = rule.weights[q] * dX.norm() * (axisymmetric ? x(0) : 1.0);
     for (int a = 0; a < C::nodes; ++a) f.template segment<2>(2 * a) += (w * N(a)) * t;
   }
   return f;
 }
 
-// Body force on a surface cell: f_a = int N_a b(X) detJ.
+// Body force on a surface cell: f_a = int N_a b(X) detJ (r).
 template <CellType T, class Force>
 Eigen::Matrix<double, 2 * fem::Cell<T>::nodes, 1> bodyForce(const fem::NodeCoords<T>& X, const Force& force,
+                                                           bool axisymmetric = false,
                                                            const fem::QuadratureRule<2>& rule =
                                                                defaultSurfaceLoadRule(T)) {
   using C = fem::Cell<T>;
   Eigen::Matrix<double, 2 * C::nodes, 1> f = Eigen::Matrix<double, 2 * C::nodes, 1>::Zero();
   for (int q = 0; q < rule.size(); ++q) {
     const auto N = C::values(rule.points[q]);
-    const double w = rule.weights[q] * fem::jacobian<T>(X, C::gradients(rule.points[q])).det;
-    const Eigen::Vector2d b = force(Eigen::Vector2d(X.transpose() * N));
+    const Eigen::Vector2d x = X.transpose() * N;
+    const double w = rule.weights[q] * fem::jacobian<T>(X, C::gradients(rule.points[q])).det *
+                     (axisymmetric ? x(0) : 1.0);
+    const Eigen::Vector2d b = force(x);
     for (int a = 0; a < C::nodes; ++a) f.template segment<2>(2 * a) += (w * N(a)) * b;
   }
   return f;
 }
 
 // Follower pressure on the deformed edge x = X + u:
-//   f_a = -int p(X) N_a (dy/dxi, -dx/dxi) dxi   (the external force),
+//   f_a = -int p(X) N_a (dy/dxi, -dx/dxi) (r) dxi   (the external force; AXIS: r = X + u_x),
 //   dfdu = df/du (not symmetric in general). In a Newton tangent for the
 //   residual f_int - f_ext this enters as K_int - dfdu. Either output may be null.
 template <CellType T, class Pressure>
 void followerPressure(const fem::EdgeCoords<T>& X, const EdgeVector<T>& u, const Pressure& pressure,
-                      EdgeVector<T>* f, EdgeMatrix<T>* dfdu, int points = defaultEdgeLoadPoints(T)) {
+                      EdgeVector<T>* f, EdgeMatrix<T>* dfdu, bool axisymmetric = false,
+                      int points = defaultEdgeLoadPoints(T)) {
   using C = fem::Cell<T>;
   const auto& rule = fem::gaussLegendre(points);
   const Eigen::Map<const Eigen::Matrix<double, 2, C::nodes>> U(u.data());
@@ -84,7 +92,10 @@ void followerPressure(const fem::EdgeCoords<T>& X, const EdgeVector<T>& u, const
     const auto N = C::values(rule.points[q]);
     const auto dN = C::gradients(rule.points[q]);
     const Eigen::Vector2d dx = X.transpose() * dN + U * dN;
-    const double wp = rule.weights[q] * pressure(Eigen::Vector2d(X.transpose() * N));
+    const Eigen::Vector2d Xq = X.transpose() * N;
+    const double p = rule.weights[q] * pressure(Xq);
+    const double r = axisymmetric ? Xq(0) + (U * N)(0) : 1.0;
+    const double wp = p * r;
     for (int a = 0; a < C::nodes; ++a) {
       if (f) {
         (*f)(2 * a) -= wp * N(a) * dx(1);
@@ -94,6 +105,10 @@ void followerPressure(const fem::EdgeCoords<T>& X, const EdgeVector<T>& u, const
         for (int b = 0; b < C::nodes; ++b) {
           (*dfdu)(2 * a, 2 * b + 1) -= wp * N(a) * dN(b);
           (*dfdu)(2 * a + 1, 2 * b) += wp * N(a) * dN(b);
+          if (axisymmetric) {  // dr/du_bx = N_b
+            (*dfdu)(2 * a, 2 * b) -= p * N(a) * dx(1) * N(b);
+            (*dfdu)(2 * a + 1, 2 * b) += p * N(a) * dx(0) * N(b);
+          }
         }
     }
   }

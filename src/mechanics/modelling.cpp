@@ -7,11 +7,17 @@ namespace aster::mechanics {
 PlaneHypothesis planeHypothesisFromName(const std::string& word) {
   if (word == "D_PLAN") return PlaneHypothesis::PlaneStrain;
   if (word == "C_PLAN") return PlaneHypothesis::PlaneStress;
-  throw Error("MODELISATION must be 'D_PLAN' or 'C_PLAN', got '" + word + "'");
+  if (word == "AXIS") return PlaneHypothesis::Axisymmetric;
+  throw Error("MODELISATION must be 'D_PLAN', 'C_PLAN' or 'AXIS', got '" + word + "'");
 }
 
 const char* planeHypothesisName(PlaneHypothesis hypothesis) {
-  return hypothesis == PlaneHypothesis::PlaneStrain ? "D_PLAN" : "C_PLAN";
+  switch (hypothesis) {
+    case PlaneHypothesis::PlaneStrain: return "D_PLAN";
+    case PlaneHypothesis::PlaneStress: return "C_PLAN";
+    case PlaneHypothesis::Axisymmetric: return "AXIS";
+  }
+  return "?";
 }
 
 Kinematics kinematicsFromName(const std::string& word) {

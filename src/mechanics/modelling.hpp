@@ -7,8 +7,10 @@
 
 namespace aster::mechanics {
 
-// D_PLAN (plane strain, e_zz = 0) and C_PLAN (plane stress, s_zz = 0).
-enum class PlaneHypothesis { PlaneStrain, PlaneStress };
+// D_PLAN (plane strain, e_zz = 0), C_PLAN (plane stress, s_zz = 0) and AXIS
+// (axisymmetric: r = X, the axis is Y, the out-of-plane strain is the hoop strain
+// u_r / r; integrals are per radian, weighted by r).
+enum class PlaneHypothesis { PlaneStrain, PlaneStress, Axisymmetric };
 
 // PETIT: eps = sym(grad u), Cauchy stress, reference configuration.
 // GROT_GDEP (also GREEN_LAGRANGE): total Lagrangian, Green-Lagrange strain E and
@@ -16,7 +18,7 @@ enum class PlaneHypothesis { PlaneStrain, PlaneStress };
 enum class Kinematics { SmallStrain, GreenLagrange };
 
 // Throw aster::Error naming the word and the choices.
-PlaneHypothesis planeHypothesisFromName(const std::string& word);  // D_PLAN, C_PLAN
+PlaneHypothesis planeHypothesisFromName(const std::string& word);  // D_PLAN, C_PLAN, AXIS
 const char* planeHypothesisName(PlaneHypothesis hypothesis);
 Kinematics kinematicsFromName(const std::string& word);  // PETIT, GROT_GDEP, GREEN_LAGRANGE
 

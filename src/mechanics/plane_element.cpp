@@ -34,15 +34,18 @@ PlaneElement<T, Law>::PlaneElement(std::shared_ptr<const Law> law, Kinematics ki
                                    const fem::QuadratureRule<2>& rule)
     : law_(std::move(law)),
       kinematics_(kinematics),
+      axisymmetric_(law_ && law_->hypothesis() == PlaneHypothesis::Axisymmetric),
       table_(rule),
-      build_(kHasAvx2Build<Law> && kernelBuildAvailable(KernelBuild::Avx2Fma) ? KernelBuild::Avx2Fma
-                                                                               : KernelBuild::Baseline) {
+      build_(KernelBuild::Baseline) {
   if (!law_) throw Error("internal error: a plane element without a behaviour law");
+  // AXIS runs the baseline 4-component path.
+  if (kHasAvx2Build<Law> && !axisymmetric_ && kernelBuildAvailable(KernelBuild::Avx2Fma))
+    build_ = KernelBuild::Avx2Fma;
 }
 
 template <CellType T, class Law>
 void PlaneElement<T, Law>::setBuild(KernelBuild build) {
-  if (!kernelBuildAvailable(build) || (build == KernelBuild::Avx2Fma && !kHasAvx2Build<Law>))
+  if (!kernelBuildAvailable(build) || (build == KernelBuild::Avx2Fma && (!kHasAvx2Build<Law> || axisymmetric_)))
     throw Error("the AVX2 + FMA build of the element kernels is not available here");
   build_ = build;
 }
@@ -50,6 +53,8 @@ void PlaneElement<T, Law>::setBuild(KernelBuild build) {
 template <CellType T, class Law>
 void PlaneElement<T, Law>::internalForce(const Coords& X, const Vector& u, const ElementHistory& history,
                                          double* variables, Vector* f, Matrix* K) const {
+  if (axisymmetric_)
+    return arithmetic::internalForceAxisymmetric<T>(table_, *law_, kinematics_, X, u, history, variables, f, K);
 #ifdef ASTER_AVX2_KERNELS
   if constexpr (kHasAvx2Build<Law>)
     if (build_ == KernelBuild::Avx2Fma) return avx2::internalForce<T>(table_, *law_, kinematics_, X, u, f, K);
@@ -68,6 +73,8 @@ void PlaneElement<T, Law>::internalForce(const Coords& X, const Vector& u, Vecto
 template <CellType T, class Law>
 void PlaneElement<T, Law>::gaussStresses(const Coords& X, const Vector& u, const ElementHistory& history, double* out,
                                          double* variables) const {
+  if (axisymmetric_)
+    return arithmetic::gaussStressesAxisymmetric<T>(table_, *law_, kinematics_, X, u, history, out, variables);
   arithmetic::gaussStresses<T>(table_, *law_, kinematics_, X, u, history, out, variables);
 }
 
@@ -82,12 +89,13 @@ void PlaneElement<T, Law>::gaussStresses(const Coords& X, const Vector& u, doubl
 template <CellType T, class Law>
 void PlaneElement<T, Law>::gaussGeometry(const Coords& X, double* xy, double* weightDet) const {
   for (int q = 0; q < table_.size(); ++q) {
+    const Eigen::Vector2d x = X.transpose() * table_.values(q);
     if (xy) {
-      const Eigen::Vector2d x = X.transpose() * table_.values(q);
       xy[2 * q] = x(0);
       xy[2 * q + 1] = x(1);
     }
-    if (weightDet) weightDet[q] = table_.weight(q) * fem::jacobian<T>(X, table_.gradients(q)).det;
+    if (weightDet)
+      weightDet[q] = table_.weight(q) * fem::jacobian<T>(X, table_.gradients(q)).det * (axisymmetric_ ? x(0) : 1.0);
   }
 }
 

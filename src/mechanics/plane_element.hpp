@@ -1,5 +1,8 @@
-// Plane (D_PLAN / C_PLAN) continuum element kernels, per unit thickness,
-// templated on the cell type so every per-element array has a fixed size.
+// Plane (D_PLAN / C_PLAN, per unit thickness) and axisymmetric (AXIS, per
+// radian) continuum element kernels, templated on the cell type so every
+// per-element array has a fixed size. The law's hypothesis() chooses: AXIS
+// elements add the hoop strain and weight every integral by the radius
+// (plane_element_arithmetic.hpp), through the law's 4-component integrate().
 //
 // Local DOF order is node-major: (ux_1, uy_1, ux_2, uy_2, ...), in the cell's
 // node order; node coordinates X are the reference (initial) ones.
@@ -65,6 +68,7 @@ class PlaneElement {
   const Law& law() const { return *law_; }
   int internalVariableCount() const { return law_->internalVariableCount(); }
   Kinematics kinematics() const { return kinematics_; }
+  bool axisymmetric() const { return axisymmetric_; }
   KernelBuild build() const { return build_; }
   // Throws aster::Error when the build is not available on this CPU.
   void setBuild(KernelBuild build);
@@ -85,12 +89,14 @@ class PlaneElement {
   void gaussStresses(const Coords& X, const Vector& u, double* out) const;
 
   // Gauss point reference coordinates (x, y per point) and weight * detJ (one
-  // per point), for integrating fields and norms; either output may be null.
+  // per point; times the radius x in AXIS: per radian), for integrating fields
+  // and norms; either output may be null.
   void gaussGeometry(const Coords& X, double* xy, double* weightDet) const;
 
  private:
   std::shared_ptr<const Law> law_;
   Kinematics kinematics_;
+  bool axisymmetric_;
   fem::ShapeTable<T> table_;
   KernelBuild build_;
 };

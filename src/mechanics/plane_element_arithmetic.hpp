@@ -92,12 +92,18 @@ void addStiffness(const IsotropicTangent& D, double w, const Eigen::Matrix2d& F,
     }
 }
 
-// Any symmetric tangent D (Voigt): K_ab += B_a^T (w D) B_b + geo_ab I, with the
-// variation of the strain for node a, direction i (Voigt, 2 E12 last)
+// Any symmetric tangent (Voigt), in the plane: its in-plane part D (xx, yy, xy;
+// the zz strain of D_PLAN is fixed, that of C_PLAN condensed by the law):
+// K_ab += B_a^T (w D) B_b + geo_ab I, with the variation of the strain for node a,
+// direction i (Voigt, 2 E12 last)
 //   B_a(:, i) = (F_i1 g_a1, F_i2 g_a2, F_i1 g_a2 + F_i2 g_a1).
 template <int nodes, class Matrix>
-void addStiffness(const VoigtTangent& D, double w, const Eigen::Matrix2d& F,
+void addStiffness(const VoigtTangent& tangent, double w, const Eigen::Matrix2d& F,
                   const Eigen::Matrix<double, nodes, 2>& G, const Eigen::Matrix<double, nodes, 2>& GS, Matrix& K) {
+  constexpr int inPlane[3] = {kXX, kYY, kXY};
+  Eigen::Matrix3d D;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) D(i, j) = tangent(inPlane[i], inPlane[j]);
   Eigen::Matrix<double, 3, 2 * nodes> B;
   for (int a = 0; a < nodes; ++a)
     for (int i = 0; i < 2; ++i) {
@@ -156,6 +162,133 @@ void gaussStresses(const fem::ShapeTable<T>& table, const Law& law, Kinematics k
     strainAt<T>(kinematics, G, u, F, E);
     LawOutput<typename Law::Tangent> response;
     integrateLaw<T>(law, kinematics, G, E, history, q, variables, response, false);
+    out[4 * q + 0] = response.stress(0, 0);
+    out[4 * q + 1] = response.stress(1, 1);
+    out[4 * q + 2] = response.stressZZ;
+    out[4 * q + 3] = response.stress(0, 1);
+  }
+}
+
+
+// AXIS (r = X, the axis along Y), per radian: every integral is weighted by the
+// radius R = sum N_a X_a of the reference point. The hoop (zz) component at a
+// point, from the radial displacement u_r = sum N_a u_ax:
+//   PETIT: eps_tt = u_r / R;  GROT_GDEP: F_tt = 1 + u_r / R, E_tt = (F_tt^2 - 1) / 2.
+// Gauss points are interior to the cell, so R > 0 on a cell with X >= 0 (AFFE_MODELE
+// refuses X < 0), nodes on the axis included.
+// f_a = int R [F S g_a + S_tt F_tt N_a / R e_r], and K its exact derivative:
+//   int R B_a^T D B_b (B with the hoop row F_tt N_a / R on u_ar), the in-plane geometric
+//   term, and the hoop geometric term S_tt N_a N_b / R on (u_ar, u_br) (GROT_GDEP).
+template <CellType T, class Vector>
+void hoopStrainAt(Kinematics kinematics, const typename fem::Cell<T>::Values& N, double R, const Vector& u,
+                  double& Ftt, double& strainZZ) {
+  double ur = 0;
+  for (int a = 0; a < fem::Cell<T>::nodes; ++a) ur += N(a) * u(2 * a);
+  if (kinematics == Kinematics::SmallStrain) {
+    Ftt = 1.0;
+    strainZZ = ur / R;
+  } else {
+    Ftt = 1.0 + ur / R;
+    strainZZ = 0.5 * (Ftt * Ftt - 1.0);
+  }
+}
+
+// The law's 4-component response at an AXIS point q (any law, through its Voigt
+// integrate()), from the strain there and the element's history.
+template <CellType T, class Law>
+void integrateAxisymmetricLaw(const Law& law, Kinematics kinematics, const typename fem::Cell<T>::Gradients& G,
+                              const typename fem::Cell<T>::Values& N, double R, const Eigen::Matrix2d& strain,
+                              double strainZZ, const ElementHistory& history, int q, double* variables,
+                              LawOutput<VoigtTangent>& out, bool withTangent) {
+  LawInput in;
+  in.strain = strain;
+  in.strainZZ = strainZZ;
+  const int count = law.internalVariableCount();
+  out.variables = count ? variables + q * count : nullptr;
+  static constexpr double kNaturalStress[4] = {0, 0, 0, 0};
+  Eigen::Matrix2d previous = Eigen::Matrix2d::Zero();
+  double previousZZ = 0;
+  if (history.displacement) {
+    Eigen::Matrix2d Fn;
+    double Fttn;
+    const Eigen::Map<const Eigen::Matrix<double, 2 * fem::Cell<T>::nodes, 1>> un(history.displacement);
+    strainAt<T>(kinematics, G, un, Fn, previous);
+    hoopStrainAt<T>(kinematics, N, R, un, Fttn, previousZZ);
+  }
+  in.strainIncrement = strain - previous;
+  in.strainIncrementZZ = strainZZ - previousZZ;
+  in.previousStress = history.stress ? history.stress + 4 * q : kNaturalStress;
+  in.previousVariables = count ? history.variables + q * count : nullptr;
+  law.integrate(in, out, withTangent);
+}
+
+template <CellType T, class Law, class Vector, class Matrix>
+void internalForceAxisymmetric(const fem::ShapeTable<T>& table, const Law& law, Kinematics kinematics,
+                               const fem::NodeCoords<T>& X, const Vector& u, const ElementHistory& history,
+                               double* variables, Vector* f, Matrix* K) {
+  constexpr int nodes = fem::Cell<T>::nodes;
+  if (f) f->setZero();
+  if (K) K->setZero();
+  const bool geometric = kinematics == Kinematics::GreenLagrange;
+  typename fem::Cell<T>::Gradients G;
+  Eigen::Matrix<double, 4, 2 * nodes> B;
+  for (int q = 0; q < table.size(); ++q) {
+    const double w = pointGradients<T>(table, X, q, G);
+    const auto& N = table.values(q);
+    const double R = X.col(0).dot(N);
+    Eigen::Matrix2d F, E;
+    strainAt<T>(kinematics, G, u, F, E);
+    double Ftt, Ett;
+    hoopStrainAt<T>(kinematics, N, R, u, Ftt, Ett);
+    LawOutput<VoigtTangent> response;
+    integrateAxisymmetricLaw<T>(law, kinematics, G, N, R, E, Ett, history, q, variables, response, K != nullptr);
+    const double wr = w * R;
+    const Eigen::Matrix2d wS = wr * response.stress;
+    const double hoop = w * response.stressZZ;  // w R S_tt / R
+    if (f) {
+      Eigen::Map<Eigen::Matrix<double, 2, nodes>> fa(f->data());
+      fa.noalias() += (F * wS).lazyProduct(G.transpose());
+      for (int a = 0; a < nodes; ++a) (*f)(2 * a) += hoop * Ftt * N(a);
+    }
+    if (K) {
+      for (int a = 0; a < nodes; ++a)
+        for (int i = 0; i < 2; ++i) {
+          B(kXX, 2 * a + i) = F(i, 0) * G(a, 0);
+          B(kYY, 2 * a + i) = F(i, 1) * G(a, 1);
+          B(kZZ, 2 * a + i) = i == 0 ? Ftt * N(a) / R : 0.0;
+          B(kXY, 2 * a + i) = F(i, 0) * G(a, 1) + F(i, 1) * G(a, 0);
+        }
+      const Eigen::Matrix<double, 4, 2 * nodes> DB = (wr * response.tangent) * B;
+      const Eigen::Matrix<double, nodes, 2> GS = G * wS;
+      for (int b = 0; b < nodes; ++b)
+        for (int a = 0; a <= b; ++a) {
+          K->template block<2, 2>(2 * a, 2 * b) +=
+              B.template middleCols<2>(2 * a).transpose() * DB.template middleCols<2>(2 * b);
+          if (!geometric) continue;
+          const double geo = GS(a, 0) * G(b, 0) + GS(a, 1) * G(b, 1);
+          (*K)(2 * a, 2 * b) += geo + hoop * N(a) * N(b) / R;
+          (*K)(2 * a + 1, 2 * b + 1) += geo;
+        }
+    }
+  }
+  if (K) K->template triangularView<Eigen::StrictlyLower>() = K->transpose();
+}
+
+template <CellType T, class Law, class Vector>
+void gaussStressesAxisymmetric(const fem::ShapeTable<T>& table, const Law& law, Kinematics kinematics,
+                               const fem::NodeCoords<T>& X, const Vector& u, const ElementHistory& history,
+                               double* out, double* variables) {
+  typename fem::Cell<T>::Gradients G;
+  for (int q = 0; q < table.size(); ++q) {
+    pointGradients<T>(table, X, q, G);
+    const auto& N = table.values(q);
+    const double R = X.col(0).dot(N);
+    Eigen::Matrix2d F, E;
+    strainAt<T>(kinematics, G, u, F, E);
+    double Ftt, Ett;
+    hoopStrainAt<T>(kinematics, N, R, u, Ftt, Ett);
+    LawOutput<VoigtTangent> response;
+    integrateAxisymmetricLaw<T>(law, kinematics, G, N, R, E, Ett, history, q, variables, response, false);
     out[4 * q + 0] = response.stress(0, 0);
     out[4 * q + 1] = response.stress(1, 1);
     out[4 * q + 2] = response.stressZZ;

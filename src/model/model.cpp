@@ -29,9 +29,11 @@ void Model::refresh() {
   segments_.clear();
   modelisation_.clear();
   std::fill(nodeUsed_.begin(), nodeUsed_.end(), false);
+  axisymmetric_ = false;
   for (int c = 0; c < mesh_->cellCount(); ++c) {
     position_[c] = -1;
     if (!assigned_[c]) continue;
+    axisymmetric_ |= byCell_[c] == Modelisation::Axisymmetric;
     for (int n : mesh_->cellNodes(c)) nodeUsed_[n] = true;
     if (mesh::topologicalDimension(mesh_->cellType(c)) == 1) {
       segments_.push_back(c);

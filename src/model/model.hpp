@@ -12,7 +12,7 @@
 
 namespace aster::model {
 
-// D_PLAN, C_PLAN: the element's plane hypothesis (mechanics/modelling.hpp).
+// D_PLAN, C_PLAN, AXIS: the element's hypothesis (mechanics/modelling.hpp).
 using Modelisation = mechanics::PlaneHypothesis;
 
 class Model {
@@ -29,6 +29,9 @@ class Model {
   const std::vector<int>& cells() const { return cells_; }  // 2D cells, in mesh order
   const std::vector<int>& segments() const { return segments_; }  // assigned segments
   Modelisation modelisation(int k) const { return modelisation_[k]; }  // of cells()[k]
+  // Whether the model is axisymmetric (AXIS): its loads are then per radian,
+  // weighted by r. AFFE_MODELE does not mix AXIS with D_PLAN/C_PLAN.
+  bool axisymmetric() const { return axisymmetric_; }
   bool hasCell(int meshCell) const { return position_[meshCell] >= 0; }
   bool nodeInModel(int node) const { return nodeUsed_[node]; }
   // Throws aster::Error naming the first node of `cells` that no element carries.
@@ -44,6 +47,7 @@ class Model {
   std::vector<int> segments_;
   std::vector<Modelisation> modelisation_;
   std::vector<bool> nodeUsed_;
+  bool axisymmetric_ = false;
 };
 
 }  // namespace aster::model

@@ -36,6 +36,7 @@ namespace {
 class CubicVolumetricLaw final : public BehaviourLaw {
  public:
   CubicVolumetricLaw(double lambda, double mu, double beta) : lambda_(lambda), mu_(mu), beta_(beta) {}
+  PlaneHypothesis hypothesis() const override { return PlaneHypothesis::PlaneStrain; }
   int internalVariableCount() const override { return 3; }
   void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const override {
     const double tr = in.strain.trace();
@@ -47,9 +48,11 @@ class CubicVolumetricLaw final : public BehaviourLaw {
     out.variables[2] = in.previousStress[0];
     if (withTangent) {
       const double k = lambda_ + 2 * beta_ * tr;
-      out.tangent << k + 2 * mu_, k, 0,  //
-          k, k + 2 * mu_, 0,             //
-          0, 0, mu_;
+      // (xx, yy, zz, 2 xy): s_zz = p depends on tr(e) = e_xx + e_yy only (e_zz = 0).
+      out.tangent << k + 2 * mu_, k, 0, 0,  //
+          k, k + 2 * mu_, 0, 0,             //
+          k, k, 0, 0,                       //
+          0, 0, 0, mu_;
     }
   }
 
@@ -59,7 +62,7 @@ class CubicVolumetricLaw final : public BehaviourLaw {
 
 constexpr double kLambda = 1.2, kMu = 0.8, kBeta = 15.0;
 
-Eigen::Vector3d voigtStress(const Eigen::Matrix2d& s) { return {s(0, 0), s(1, 1), s(0, 1)}; }
+Eigen::Vector4d voigtStress(const Eigen::Matrix2d& s, double szz) { return {s(0, 0), s(1, 1), szz, s(0, 1)}; }
 
 TEST(BehaviourLaw, CubicLawTangentMatchesDifferences) {
   const CubicVolumetricLaw law(kLambda, kMu, kBeta);
@@ -74,17 +77,18 @@ TEST(BehaviourLaw, CubicLawTangentMatchesDifferences) {
   out.variables = plus.variables = minus.variables = variables;
   law.integrate(in, out, true);
   const double h = 1e-7;
-  for (int j = 0; j < 3; ++j) {
-    // Voigt strains (E11, E22, 2 E12): a step h in 2 E12 moves E12 and E21 by h/2.
+  for (int j : {kXX, kYY, kXY}) {
+    // Voigt strains (E11, E22, E33, 2 E12): a step h in 2 E12 moves E12 and E21 by h/2.
     Eigen::Matrix2d dE = Eigen::Matrix2d::Zero();
-    if (j < 2) dE(j, j) = h;
+    if (j != kXY) dE(j, j) = h;
     else dE(0, 1) = dE(1, 0) = h / 2;
     LawInput ip = in, im = in;
     ip.strain += dE;
     im.strain -= dE;
     law.integrate(ip, plus, false);
     law.integrate(im, minus, false);
-    const Eigen::Vector3d column = (voigtStress(plus.stress) - voigtStress(minus.stress)) / (2 * h);
+    const Eigen::Vector4d column =
+        (voigtStress(plus.stress, plus.stressZZ) - voigtStress(minus.stress, minus.stressZZ)) / (2 * h);
     EXPECT_LT((column - out.tangent.col(j)).norm(), 1e-7 * out.tangent.norm()) << "column " << j;
   }
 }
