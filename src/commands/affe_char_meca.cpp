@@ -73,9 +73,8 @@ int componentOf(const std::string& ddl, const Keywords& occ) {
 }
 
 // "AFFE_CHAR_MECA (study.lua:12) LIAISON_DDL[2]": where a relation was defined.
-std::string originOf(const Session& session, const Keywords& occ) {
-  return session.command + " (" + session.where + ") " + occ.path;
-}
+std::string commandOf(const Session& session) { return session.command + " (" + session.where + ") "; }
+std::string originOf(const Session& session, const Keywords& occ) { return commandOf(session) + occ.path; }
 
 // LIAISON_DDL: the nodes of the groups in their order (a node may come twice, with two DDL).
 void readLiaisonDdl(const model::Model& m, const Session& session, const Keywords& occ,
@@ -281,7 +280,7 @@ void checkOutwardNormals(const mesh::Mesh& mesh, const Keywords& occ, const std:
 // The imposed values and relations of one load with constant values, eliminated: a set
 // that contradicts itself is refused where it is defined (values that are functions are
 // checked by the analysis at each instant, as are sets made of several loads).
-void checkRelations(const model::Model& m, const model::MechanicalLoad& load) {
+void checkRelations(const model::Model& m, const model::MechanicalLoad& load, const Session& session) {
   if (load.relations.empty()) return;
   for (const auto& rel : load.relations)
     if (!rel.value.isConstant()) return;
@@ -314,7 +313,9 @@ void checkRelations(const model::Model& m, const model::MechanicalLoad& load) {
   try {
     linalg::ConstraintElimination(n, isFixed, values, relations);
   } catch (const linalg::ContradictoryRelationError& e) {
-    throw Error(load.relations[e.relation()].origin + ": this linear relation contradicts the imposed displacements "
+    // The command and its line are those of the message already: the keyword is enough.
+    const std::string& origin = load.relations[e.relation()].origin;
+    throw Error(origin.substr(commandOf(session).size()) + ": this linear relation contradicts the imposed displacements "
                 "and the relations before it (its two sides differ by " + format::shortest(e.mismatch()) + ")");
   }
 }
@@ -355,7 +356,7 @@ model::MechanicalLoad readMechanical(const model::Model& m, const Keywords& k, c
   }
   for (const auto& occ : k.factor("FORCE_NODALE"))
     load.nodalForces.push_back({nodesOf(mesh, occ), valueOf(occ, "FX"), valueOf(occ, "FY")});
-  checkRelations(m, load);
+  checkRelations(m, load, session);
   return load;
 }
 
