@@ -47,15 +47,21 @@ ConstraintElimination::ConstraintElimination(int n, const std::vector<char>& fix
         add(j, a);
       }
     }
-    // A coefficient that cancelled (to round-off of the ones added) is no pivot.
+    // A coefficient that cancelled (to round-off of the ones added) is no pivot. The pivot
+    // is the first unknown whose coefficient is at least half the largest (threshold
+    // pivoting): the relation's own unknown, given first, becomes the slave, and the
+    // unknowns several relations share (a LIAISON_UNIF's first node, a solid's A and B)
+    // stay masters, which keeps the slaves' expressions short.
     const double drop = 1e-12 * coefScale;
+    double largest = 0;
+    for (int j : order) largest = std::max(largest, std::fabs(acc[j]));
     int pivot = -1;
-    double best = 0;
-    for (int j : order)
-      if (std::fabs(acc[j]) > drop && std::fabs(acc[j]) > best) {
-        best = std::fabs(acc[j]);
-        pivot = j;
-      }
+    if (largest > drop)
+      for (int j : order)
+        if (std::fabs(acc[j]) >= 0.5 * largest) {
+          pivot = j;
+          break;
+        }
     if (pivot < 0) {
       for (int j : order) acc[j] = 0, listed[j] = 0;
       if (std::fabs(b) <= 1e-10 * size) {

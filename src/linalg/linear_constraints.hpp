@@ -3,8 +3,8 @@
 // symmetric positive definite stiffness so: u = T v + g, where each slave
 // unknown is a combination of free (master) unknowns plus a constant, and the
 // reduced system is T^T K T v = T^T (f - K g). The slaves are chosen by a
-// pivoted elimination of the relations taken in order (largest coefficient
-// first), so chained relations (u1 = u2, u2 = u3) and redundant ones (a
+// pivoted elimination of the relations taken in order (threshold pivoting: the
+// first unknown of a relation whose coefficient is at least half the largest), so chained relations (u1 = u2, u2 = u3) and redundant ones (a
 // relation that follows from the others) are accepted; a relation that
 // contradicts the others throws ContradictoryRelationError.
 //

@@ -136,6 +136,18 @@ TEST(ConstraintElimination, ContradictoryRelationsAreRefused) {
   EXPECT_THROW(ConstraintElimination(kN, fixed, values, {{{{3, 2.0}}, 1.0}}), ContradictoryRelationError);
 }
 
+// u_i = 1.5 u_0 for i = 1, 2, 3: each relation's first unknown, whose coefficient is at
+// least half the largest, is its slave; the shared u_0 stays a master (one term each).
+TEST(ConstraintElimination, SharedUnknownStaysMaster) {
+  std::vector<LinearRelation> rel;
+  for (int i = 1; i <= 3; ++i) rel.push_back({{{i, 1.0}, {0, -1.5}}, 0.0});
+  const ConstraintElimination e(kN, noneFixed(), Eigen::VectorXd(), rel);
+  EXPECT_FALSE(e.isSlave(0));
+  for (int i = 1; i <= 3; ++i) EXPECT_TRUE(e.isSlave(i));
+  const Eigen::VectorXd u = eliminationSolve(stiffness(), load(), e);
+  EXPECT_LT((u - lagrangeSolve(stiffness(), load(), rel)).lpNorm<Eigen::Infinity>(), 1e-12);
+}
+
 TEST(ConstraintElimination, ReducedMatrixIsSymmetricWithIdentityRows) {
   const SparseMatrix K = stiffness();
   std::vector<char> fixed = noneFixed();
