@@ -3,7 +3,8 @@
 -- FACE_IMPO DNOR and DTAN on inclined edges: the unit square rotated by 30 degrees
 -- (liaison_rotated_quad8.mail, 2 x 2 QUAD8, SEG3 edges), D_PLAN, E = 1000, NU = 0.3;
 -- local axes e1 = (cos 30, sin 30), e2 = (-sin 30, cos 30), x1 = X.e1, x2 = X.e2.
--- 1. DNOR = 0 on GAUCHE (x1 = 0) and on BAS (x2 = 0), traction S e1 on DROITE: the
+-- 1. DNOR = 0 on GAUCHE (x1 = 0) and on BAS (x2 = 0) but its end O (SANS_GROUP_NO: O keeps
+--    GAUCHE's condition alone), traction S e1 on DROITE: the
 --    uniform uniaxial stress sigma = S e1 e1^T, u = eps1 x1 e1 + eps2 x2 e2 with
 --    eps1 = (1 - NU^2) S / E, eps2 = -NU (1 + NU) S / E.
 -- 2. AFFE_CHAR_MECA_F: DNOR = 0 on GAUCHE and BAS, DNOR = delta on DROITE, DTAN = -delta x1
@@ -41,7 +42,8 @@ local function check(res, eps1, eps2, sigma1, what)
   end
 end
 
-CH1 = AFFE_CHAR_MECA{MODELE = MO, FACE_IMPO = {{GROUP_MA = 'GAUCHE', DNOR = 0.0}, {GROUP_MA = 'BAS', DNOR = 0.0}},
+CH1 = AFFE_CHAR_MECA{MODELE = MO, FACE_IMPO = {{GROUP_MA = 'GAUCHE', DNOR = 0.0},
+                                               {GROUP_MA = 'BAS', SANS_GROUP_NO = 'O', DNOR = 0.0}},
                      FORCE_CONTOUR = {GROUP_MA = 'DROITE', FX = S * c, FY = S * s}}
 R1 = MECA_STATIQUE{MODELE = MO, CHAM_MATER = CM, EXCIT = {CHARGE = CH1}, INST = 1.0}
 check(R1, (1 - NU * NU) * S / E, -NU * (1 + NU) * S / E, S, 'traction')
