@@ -60,6 +60,14 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
   std::vector<int> perNode(mesh.nodeCount(), 0);
   for (int n = 0; n < mesh.nodeCount(); ++n) perNode[n] = m.nodeInModel(n) ? 2 : 0;
   dofs_ = fem::DofMap(perNode);
+  for (const auto& applied : problem_.loads)
+    for (const auto& rel : applied.load->relations) {
+      for (const auto& term : rel.terms)
+        if (!dofs_.count(term.node))
+          throw Error(rel.origin + ": node " + mesh.nodeName(term.node) +
+                      " carries no element of the model, so no DX, DY");
+      relationOrigins_.push_back(rel.origin);
+    }
   if (problem_.kinematics.size() != m.cells().size())
     throw Error("internal error: one kinematics per cell of the model is expected");
 
@@ -365,6 +373,37 @@ std::vector<std::pair<int, double>> MechanicalSystem::imposed(double t) const {
       }
   }
   return out;
+}
+
+std::vector<linalg::LinearRelation> MechanicalSystem::linearRelations(double t) const {
+  const mesh::Mesh& mesh = problem_.model->mesh();
+  std::vector<linalg::LinearRelation> out;
+  out.reserve(relationOrigins_.size());
+  for (const auto& applied : problem_.loads) {
+    if (applied.load->relations.empty()) continue;
+    const double factor = applied.factor(t);
+    for (const auto& rel : applied.load->relations) {
+      linalg::LinearRelation r;
+      for (const auto& term : rel.terms) r.terms.emplace_back(dof(term.node, term.component), term.coefficient);
+      const int n = rel.terms.front().node;
+      const Eigen::Vector3d p = mesh.node(n);
+      r.rhs = factor * loadValue(rel.value, rel.origin.c_str(), "", " at node " + mesh.nodeName(n), p(0), p(1),
+                                 p(2), t);
+      out.push_back(std::move(r));
+    }
+  }
+  return out;
+}
+
+linalg::ConstraintElimination MechanicalSystem::eliminate(const std::vector<char>& fixed,
+                                                          const Eigen::VectorXd& values, double t) const {
+  try {
+    return linalg::ConstraintElimination(static_cast<int>(fixed.size()), fixed, values, linearRelations(t));
+  } catch (const linalg::ContradictoryRelationError& e) {
+    throw Error(relationOrigin(e.relation()) + ": this linear relation contradicts the imposed displacements and "
+                "the relations before it (its two sides differ by " + format::shortest(e.mismatch()) +
+                " at INST = " + format::shortest(t) + ")");
+  }
 }
 
 mechanics::ElementHistory MechanicalSystem::historyOf(const Cell& cell, double* un) const {

@@ -16,6 +16,7 @@
 #include "expr/function.hpp"
 #include "fem/assembly_pattern.hpp"
 #include "fem/dof_map.hpp"
+#include "linalg/linear_constraints.hpp"
 #include "mechanics/behaviour_law.hpp"
 #include "mechanics/element_kernel.hpp"
 #include "mechanics/modelling.hpp"
@@ -86,6 +87,17 @@ class MechanicalSystem {
   // Imposed displacements at t: (dof, value), each DOF once (the last load wins).
   std::vector<std::pair<int, double>> imposed(double t) const;
 
+  // The linear relations of the loads (LIAISON_DDL, LIAISON_UNIF, LIAISON_SOLIDE, FACE_IMPO
+  // DNOR/DTAN) on DOF numbers, their right-hand sides at t (times FONC_MULT), in the order
+  // of the loads; relationOrigin(k) names the command and keyword that defined relation k.
+  bool hasLinearRelations() const { return !relationOrigins_.empty(); }
+  std::vector<linalg::LinearRelation> linearRelations(double t) const;
+  const std::string& relationOrigin(int k) const { return relationOrigins_[k]; }
+  // The fixed values and relations at t, eliminated (the drivers' path when hasLinearRelations());
+  // a contradictory set throws aster::Error naming the relation and where it was defined.
+  linalg::ConstraintElimination eliminate(const std::vector<char>& fixed, const Eigen::VectorXd& values,
+                                          double t) const;
+
   // The laws' state at the last accepted step (the natural state, U = 0, at first):
   // evaluate() and gaussStresses() integrate from it. acceptState(U) integrates
   // the laws at U (mechanical DOFs first) and keeps the result: the driver calls it
@@ -137,6 +149,7 @@ class MechanicalSystem {
   static constexpr int kChunkCells = 32;
   std::vector<std::vector<int>> chunkColours_;
   std::vector<Edge> pressureEdges_;
+  std::vector<std::string> relationOrigins_;  // per relation of the loads, in their order
   // Dead loads independent of time, computed once: F(t) = factor(t) * F0.
   std::vector<Eigen::VectorXd> constantDeadLoads_;  // per problem_.loads entry, empty if time dependent
   // The accepted state of the cells whose law has history: U, 4 stresses per Gauss

@@ -36,7 +36,7 @@ void StaticLinear::run(const std::vector<double>& times,
   pattern.takeMatrix(K);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd fint, fext;
-  bool assembled = false, analyzed = false;
+  bool assembled = false;
   std::vector<char> factorizedFixed;  // the fixed unknowns of the factorization held (empty: none)
   for (double t : times) {
     auto assemblyStart = Clock::now();
@@ -51,30 +51,24 @@ void StaticLinear::run(const std::vector<double>& times,
       fixed[d] = 1;
       target(d) = v;
     }
-    if (fixed != factorizedFixed) {
-      A = K;
-      linalg::eliminateFixedUnknowns(A, fixed);
-      factorizedFixed.clear();
-      try {
-        if (!analyzed) {
-          linalg::chooseBlasThreads(n);
-          solver_->analyze(A);
-          analyzed = true;
-        }
-        solver_->factorize(A);
-      } catch (const linalg::SingularMatrixError& e) {
-        throwSingular(e);
-      }
-      ++stats_.factorizations;
-      factorizedFixed = fixed;
-    }
-    // Free unknowns: K_ff U_f = F_f - K_fd U_d; fixed ones: their values.
-    Eigen::VectorXd rhs = fext - fint;
-    if (target.lpNorm<Eigen::Infinity>() > 0) rhs -= K * target;
-    for (int i = 0; i < n; ++i)
-      if (fixed[i]) rhs(i) = target(i);
     Eigen::VectorXd U;
-    solver_->solve(rhs, U);
+    if (system_.hasLinearRelations()) {
+      U = solveWithRelations(K, fext - fint, fixed, target, t);
+    } else {
+      if (fixed != factorizedFixed) {
+        A = K;
+        linalg::eliminateFixedUnknowns(A, fixed);
+        factorizedFixed.clear();
+        factorize(A, false);
+        factorizedFixed = fixed;
+      }
+      // Free unknowns: K_ff U_f = F_f - K_fd U_d; fixed ones: their values.
+      Eigen::VectorXd rhs = fext - fint;
+      if (target.lpNorm<Eigen::Infinity>() > 0) rhs -= K * target;
+      for (int i = 0; i < n; ++i)
+        if (fixed[i]) rhs(i) = target(i);
+      solver_->solve(rhs, U);
+    }
     stats_.solveSeconds += seconds(solveStart);
     if (!U.allFinite()) throw Error("the solution at the instant " + std::to_string(t) + " is not a number");
     assemblyStart = Clock::now();
@@ -89,6 +83,38 @@ void StaticLinear::run(const std::vector<double>& times,
     solved(c);
   }
   stats_.totalSeconds += seconds(start);
+}
+
+void StaticLinear::factorize(const linalg::SparseMatrix& A, bool patternChanged) {
+  try {
+    if (!analyzed_ || patternChanged) {
+      if (!analyzed_) linalg::chooseBlasThreads(static_cast<int>(A.rows()));
+      solver_->analyze(A);
+      analyzed_ = true;
+    }
+    solver_->factorize(A);
+  } catch (const linalg::SingularMatrixError& e) {
+    throwSingular(e);
+  }
+  ++stats_.factorizations;
+}
+
+// U = T v + g with T^T K T v = T^T (F - K g): the relations hold exactly, and the residual
+// F - K U at the slave unknowns is what the relations transmit (the reactions there).
+Eigen::VectorXd StaticLinear::solveWithRelations(const linalg::SparseMatrix& K, const Eigen::VectorXd& load,
+                                                 const std::vector<char>& fixed, const Eigen::VectorXd& target,
+                                                 double t) {
+  const linalg::ConstraintElimination elimination = system_.eliminate(fixed, target, t);
+  if (!factorizedElimination_ || !elimination.sameTransformation(*factorizedElimination_)) {
+    factorizedElimination_.reset();
+    // Another transformation gives another pattern of T^T K T: analyzed again.
+    factorize(elimination.reduce(K), true);
+    factorizedElimination_ = std::make_unique<linalg::ConstraintElimination>(elimination);
+  }
+  const Eigen::VectorXd rhs = elimination.reduce(Eigen::VectorXd(load - K * elimination.offset()));
+  Eigen::VectorXd v;
+  solver_->solve(rhs, v);
+  return elimination.expand(v);
 }
 
 // The solver's message, with the unknown it names.

@@ -2,7 +2,9 @@
 // instants. The stiffness does not depend on the instant: it is assembled and
 // factorized once (again only if the set of imposed unknowns changes), and each
 // instant is one solve with its loads. Imposed displacements are eliminated as
-// the Newton driver does (rows and columns replaced by the identity's).
+// the Newton driver does (rows and columns replaced by the identity's); with linear
+// relations (LIAISON_*, FACE_IMPO) the slave unknowns are eliminated with them
+// (linalg::ConstraintElimination).
 #pragma once
 #include <functional>
 #include <memory>
@@ -45,11 +47,18 @@ class StaticLinear {
 
  private:
   [[noreturn]] void throwSingular(const linalg::SingularMatrixError& e) const;
+  void factorize(const linalg::SparseMatrix& A, bool patternChanged);
+  // U at t with the linear relations: K reduced by the elimination of the relations and
+  // fixed values (factorized again only when the transformation changed).
+  Eigen::VectorXd solveWithRelations(const linalg::SparseMatrix& K, const Eigen::VectorXd& load,
+                                     const std::vector<char>& fixed, const Eigen::VectorXd& target, double t);
 
   const MechanicalSystem& system_;
   LinearSettings settings_;
   std::unique_ptr<linalg::LinearSolver> solver_;
   LinearStatistics stats_;
+  bool analyzed_ = false;
+  std::unique_ptr<linalg::ConstraintElimination> factorizedElimination_;  // what the factorization reduced
 };
 
 }  // namespace aster::analysis

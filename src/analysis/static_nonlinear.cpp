@@ -54,6 +54,7 @@ void StaticNonlinear::buildPattern() {
   analyzed_ = false;
   factorized_ = Factorized::None;
   lastFixed_.clear();
+  lastElimination_.reset();
 }
 
 void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatrix) {
@@ -75,6 +76,8 @@ struct StaticNonlinear::Step {
   double dataScale = 0;
   std::vector<char> fixed;  // per unknown: imposed, or fixed by the additional terms
   Eigen::VectorXd target;   // values of the fixed unknowns
+  // With linear relations: the fixed values and the relations at t1, eliminated.
+  std::shared_ptr<const linalg::ConstraintElimination> elimination;
   bool statusChanged = false;  // the additional terms changed status with the last correction
 };
 
@@ -132,7 +135,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     }
     fixUnknowns(step);
     // A kept tangent factorization eliminated other unknowns: assemble anew.
-    if (!it.elastic && !it.assembleTangent && step.fixed != lastFixed_) {
+    if (!it.elastic && !it.assembleTangent && !sameConstraints(step)) {
       assemble(U, t1, true);
       it.assembleTangent = true;
     }
@@ -224,6 +227,15 @@ void StaticNonlinear::fixUnknowns(Step& step) const {
       step.target(d) = 0.0;
     }
   }
+  if (system_.hasLinearRelations())
+    step.elimination = std::make_shared<const linalg::ConstraintElimination>(
+        system_.eliminate(step.fixed, step.target, step.t1));
+}
+
+bool StaticNonlinear::sameConstraints(const Step& step) const {
+  if (step.fixed != lastFixed_) return false;
+  if (!step.elimination) return true;
+  return lastElimination_ && step.elimination->sameTransformation(*lastElimination_);
 }
 
 // Residual on the free unknowns, relative to the forces that balance the internal forces
@@ -231,14 +243,26 @@ void StaticNonlinear::fixUnknowns(Step& step) const {
 bool StaticNonlinear::measureResidual(const Step& step, Iteration& it, std::vector<double>& history,
                                       std::string& why) {
   const int nm = system_.dofCount();
+  // With relations, the residual of the free unknowns is T^T r: a master's own and what its
+  // slaves pass on to it.
+  // The loads that balance fint likewise: r - fint, reduced.
+  Eigen::VectorXd reduced, balance;
+  if (step.elimination) {
+    reduced = step.elimination->reduce(r_);
+    balance = r_;
+    balance.head(nm) -= fint_;
+    balance = step.elimination->reduce(balance);
+  }
+  const Eigen::VectorXd& res = step.elimination ? reduced : r_;
+  const std::vector<char>& constrained = step.elimination ? step.elimination->constrained() : step.fixed;
   double resMax = 0, denom = 0;
   for (int i = 0; i < n_; ++i) {
-    if (step.fixed[i]) {
+    if (constrained[i]) {
       if (i < nm) denom = std::max(denom, std::fabs(fint_(i)));
       continue;
     }
-    resMax = std::max(resMax, std::fabs(r_(i)));
-    if (i < nm) denom = std::max(denom, std::fabs(r_(i) - fint_(i)));  // the loads that balance fint
+    resMax = std::max(resMax, std::fabs(res(i)));
+    if (i < nm) denom = std::max(denom, std::fabs(step.elimination ? balance(i) : r_(i) - fint_(i)));  // the loads that balance fint
   }
   if (!std::isfinite(resMax)) {
     why = "the residual is not a number (the state became invalid)";
@@ -271,6 +295,11 @@ StaticNonlinear::Verdict StaticNonlinear::convergence(const Eigen::VectorXd& U, 
   it.dirichletMet = true;
   for (const auto& [d, v] : step.imposed)
     it.dirichletMet = it.dirichletMet && std::fabs(U(d) - v) <= 1e-12 * (1 + std::fabs(v));
+  if (step.elimination) {
+    const Eigen::VectorXd P = step.elimination->expand(U);
+    for (int i = 0; i < n_ && it.dirichletMet; ++i)
+      if (step.elimination->isSlave(i)) it.dirichletMet = std::fabs(U(i) - P(i)) <= 1e-12 * (1 + std::fabs(P(i)));
+  }
   if (it.k > 0 && (criteriaMet || atRoundOff) && !step.statusChanged && it.dirichletMet) return Verdict::Converged;
   if (it.k >= settings_.iterGlobMaxi) return Verdict::Exhausted;
   return Verdict::Iterate;
@@ -280,6 +309,10 @@ StaticNonlinear::Verdict StaticNonlinear::convergence(const Eigen::VectorXd& U, 
 // Newton correction: K dU = -r on the free unknowns, dU = target - U on the fixed ones;
 // the matrix is eliminated and factorized again when it changed.
 void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Iteration& it) {
+  if (step.elimination) {
+    solveWithRelations(U, step, it);
+    return;
+  }
   const auto solveStart = Clock::now();
   linalg::LinearSolver& solver = *solver_->solver;
   Eigen::VectorXd dUc = Eigen::VectorXd::Zero(n_);
@@ -318,6 +351,49 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
   solver.solve(rhs, dU);
   stats_.solveSeconds += seconds(solveStart);
   U += dU;
+}
+
+// With linear relations: dU = T dv + g_d, where g_d = (T U + g) - U brings U onto the
+// relations and fixed values (zero at the masters), and T^T K T dv = T^T (-r - K g_d).
+// K itself is kept: the reduced matrix is a new one.
+void StaticNonlinear::solveWithRelations(Eigen::VectorXd& U, const Step& step, Iteration& it) {
+  const auto solveStart = Clock::now();
+  const linalg::ConstraintElimination& e = *step.elimination;
+  const linalg::SparseMatrix& Kuse = it.elastic ? Kelastic_ : K_;
+  const Eigen::VectorXd gd = e.expand(U) - U;
+  Eigen::VectorXd rhs = -r_;
+  if (gd.lpNorm<Eigen::Infinity>() > 0) rhs -= Kuse * gd;
+  rhs = e.reduce(rhs);
+  it.refactored = it.assembleTangent || (it.elastic && factorized_ != Factorized::Elastic) || !sameConstraints(step);
+  if (it.refactored) {
+    const bool patternChanged = !lastElimination_ || !e.sameTransformation(*lastElimination_);
+    factorized_ = Factorized::None;
+    reduced_ = e.reduce(Kuse);
+    factorize(reduced_, patternChanged, it);
+    factorized_ = it.elastic ? Factorized::Elastic : Factorized::Tangent;
+    lastFixed_ = step.fixed;
+    lastElimination_ = step.elimination;
+  }
+  Eigen::VectorXd dv;
+  solver_->solver->solve(rhs, dv);
+  stats_.solveSeconds += seconds(solveStart);
+  U += e.expand(dv) - e.offset() + gd;
+}
+
+void StaticNonlinear::factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it) {
+  linalg::LinearSolver& solver = *solver_->solver;
+  try {
+    if (!analyzed_ || patternChanged) {
+      if (!analyzed_) linalg::chooseBlasThreads(static_cast<int>(A.rows()));
+      solver.analyze(A);
+      analyzed_ = true;
+    }
+    solver.factorize(A);
+  } catch (const linalg::SingularMatrixError& e) {
+    report(it, it.elastic ? "ELASTIQUE" : "TANGENTE");
+    throwSingular(e);
+  }
+  ++stats_.factorizations;
 }
 
 // The solver's message, with the unknown it names and, with contact, how contact stands.

@@ -1,7 +1,8 @@
 // STAT_NON_LINE's algorithm: incremental loading over a list of instants,
 // Newton-Raphson at each instant with the consistent tangent, imposed
 // displacements eliminated (rows and columns replaced by the identity, which
-// keeps a symmetric tangent symmetric), and automatic step cutting on failure
+// keeps a symmetric tangent symmetric; with linear relations, the slave unknowns
+// by the transformation of linalg::ConstraintElimination), and automatic step cutting on failure
 // (DEFI_LIST_INST's ECHEC: SUBD_PAS sub-steps, at most SUBD_NIVEAU levels).
 //
 // Each Newton iteration runs the same stages, each a member function below: choose the
@@ -96,6 +97,10 @@ class StaticNonlinear {
   bool measureResidual(const Step& step, Iteration& it, std::vector<double>& history, std::string& why);
   Verdict convergence(const Eigen::VectorXd& U, const Step& step, Iteration& it) const;
   void factorAndSolve(Eigen::VectorXd& U, const Step& step, Iteration& it);
+  void solveWithRelations(Eigen::VectorXd& U, const Step& step, Iteration& it);
+  void factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it);
+  // The factorization held eliminated the same fixed unknowns and relations as the step's.
+  bool sameConstraints(const Step& step) const;
   void report(const Iteration& it, const char* matrix) const;
   [[noreturn]] void throwSingular(const linalg::SingularMatrixError& e) const;
   void finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt);
@@ -119,6 +124,9 @@ class StaticNonlinear {
   enum class Factorized { None, Tangent, Elastic };
   Factorized factorized_ = Factorized::None;
   std::vector<char> lastFixed_;
+  // With linear relations: the elimination the factorization held, and its reduced matrix.
+  std::shared_ptr<const linalg::ConstraintElimination> lastElimination_;
+  linalg::SparseMatrix reduced_;
   // The last converged (sub-)step, for PREDICTION='EXTRAPOLE' and REAC_INCR.
   Eigen::VectorXd previousIncrement_;
   double previousDt_ = 0;
