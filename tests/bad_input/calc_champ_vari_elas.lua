@@ -1,5 +1,5 @@
 -- expect-exit: 2
--- expect-output: <F> <CALC_CHAMP> .*calc_champ_vari_elas\.lua:13: VARI_INTERNE: the result has no internal variables \(VARI_ELGA\) at NUME_ORDRE 0 \(INST 0\): its behaviour \(ELAS\) has none
+-- expect-output: <F> <CALC_CHAMP> .*calc_champ_vari_elas\.lua:13: VARI_INTERNE: the result has no internal variables \(VARI_ELGA\) at NUME_ORDRE 1 \(INST 0\): its behaviour \(ELAS\) has none
 -- CALC_CHAMP of internal variables on a linear elastic result: ELAS has none.
 DEBUT{}
 DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}

@@ -207,8 +207,9 @@ end
     // int (s_rr + s_tt) r dA equals the work of the pressure, p a * a h, exactly; with
     // e_zz = 0, s_zz = NU (s_rr + s_tt), and the axial reaction per radian is exactly
     // -NU p a^2 (per unit height: BAS), on every mesh.
-    if (axis)
+    if (axis) {
       for (auto& run : runs) EXPECT_LT(std::abs(run["axial"]), 1e-10);
+    }
   }
 
   fs::path dir_;
