@@ -535,6 +535,7 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
     if (std::find(spec.results.begin(), spec.results.end(), result->typeName()) == spec.results.end())
       throw Error("internal error: the operator returned a " + result->typeName() + ", the catalogue says " +
                   describeTypes(spec.results));
+    if (result->assignedAs.empty()) result->assignedAs = session.assignedName;
     pushConcept(L, std::move(result));
     return 1;
   } catch (const ValidationError& e) {
@@ -1171,7 +1172,8 @@ Interpreter::Interpreter(Session& session) : state_(std::make_unique<State>()), 
       lua_pop(L, 1);
     }
     lua_pop(L, 1);
-    return found.empty() ? generatedName(c) : found;
+    if (!found.empty()) return found;
+    return c.assignedAs.empty() ? generatedName(c) : c.assignedAs;
   };
 
   // Ctrl-C while the study is stuck in one library call (no hook runs there):
