@@ -31,7 +31,7 @@ void checkJacobians(const mesh::Mesh& mesh, const model::Model& model) {
   };
   for (const auto* cells : {&model.cells(), &model.segments()})
     for (int c : *cells) {
-      const fem::JacobianSigns s = fem::jacobianSigns(mesh, c);
+      const fem::JacobianSigns s = fem::jacobianSigns(mesh, c, model.axisymmetric());
       if (s.negative == 0 && s.zero == 0) continue;
       if (s.positive > 0 && s.negative > 0) distorted.push_back(name(c));
       else if (s.negative > 0 && s.zero == 0) inverted.push_back(name(c));

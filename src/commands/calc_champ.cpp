@@ -90,13 +90,14 @@ CellField restricted(const CellField& f, const std::vector<char>& keep, const st
 }
 
 // ELGA -> ELNO on every cell of the field.
-CellField toNodes(const CellField& elga, const mesh::Mesh& mesh, const std::string& name) {
+CellField toNodes(const CellField& elga, const model::Model& model, const std::string& name) {
+  const auto& mesh = model.mesh();
   CellField out{name, elga.components, elga.cells, {0}, {}, CellLocation::Nodes};
   const int nc = static_cast<int>(elga.components.size());
   for (std::size_t k = 0; k < elga.cells.size(); ++k) {
     const int cell = elga.cells[k];
     const fem::CellType t = fem::referenceCell(mesh.cellType(cell), name.c_str());
-    const Eigen::MatrixXd& G = post::modelGaussToNodes(t);
+    const Eigen::MatrixXd& G = post::modelGaussToNodes(t, model.axisymmetric());
     if (pointsOf(elga, k) != G.cols())
       throw Error(name + ": cell " + mesh.cellName(cell) + " holds " + std::to_string(pointsOf(elga, k)) + " points in " +
                   elga.name + ", not the " + std::to_string(G.cols()) + " of the model's integration rule");
@@ -205,10 +206,7 @@ CellField strains(const Context& ctx, const mesh::NodalField& depl, post::Strain
         zz.planeStress = true;
         zz.nu = materialOf(ctx, cell, name + " in C_PLAN (EPZZ from s_zz = 0)").NU;
         break;
-      default:
-        throw Error(name + ": the modelisation " +
-                    std::string(mechanics::planeHypothesisName(ctx.model->modelisation(ctx.modelIndex[cell]))) +
-                    " of cell " + mesh.cellName(cell) + " is not available (D_PLAN and C_PLAN are)");
+      case model::Modelisation::Axisymmetric: zz.axisymmetric = true; break;
     }
     const auto nodes = mesh.cellNodes(cell);
     X.clear();
@@ -221,7 +219,7 @@ CellField strains(const Context& ctx, const mesh::NodalField& depl, post::Strain
       u.push_back(depl.values[n * dnc + cy]);
     }
     const std::size_t at = out.values.size();
-    out.values.resize(at + post::strainPointCount(t) * post::kStrainComponents);
+    out.values.resize(at + post::strainPointCount(t, zz.axisymmetric) * post::kStrainComponents);
     post::gaussStrains(t, X.data(), u.data(), measure, zz, out.values.data() + at);
     out.offsets.push_back(static_cast<int>(out.values.size()));
   }
@@ -288,7 +286,7 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
       done.insert("SIEQ_ELGA");
     }
     if (asked(options, {"SIEF_ELNO", "SIGM_ELNO", "SIEF_NOEU", "SIGM_NOEU", "SIEQ_ELNO", "SIEQ_NOEU"})) {
-      const CellField elno = toNodes(sief, mesh, "SIGM_ELNO");
+      const CellField elno = toNodes(sief, *ctx.model, "SIGM_ELNO");
       for (const char* prefix : {"SIEF", "SIGM"}) {
         const std::string e = std::string(prefix) + "_ELNO", n = std::string(prefix) + "_NOEU";
         if (options.count(e) || options.count(n)) {
@@ -327,7 +325,7 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
                                                        : post::StrainMeasure::GreenLagrange;
     CellField elga = strains(ctx, ResultConcept::nodalField(inst, "DEPL"), measure, g);
     if (options.count(e) || options.count(n)) {
-      CellField elno = toNodes(elga, mesh, e);
+      CellField elno = toNodes(elga, *ctx.model, e);
       if (options.count(n)) {
         std::vector<int> support;
         mesh::NodalField nodal = toNodal(elno, mesh, n, support);
@@ -349,7 +347,7 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
     if (!vari)
       throw Error("VARI_INTERNE: the result has no internal variables (VARI_ELGA) at " + at +
                   ": its behaviour (ELAS) has none");
-    CellField elno = toNodes(restricted(*vari, ctx.keep, "VARI_ELGA"), mesh, "VARI_ELNO");
+    CellField elno = toNodes(restricted(*vari, ctx.keep, "VARI_ELGA"), *ctx.model, "VARI_ELNO");
     if (options.count("VARI_NOEU")) {
       std::vector<int> support;
       mesh::NodalField nodal = toNodal(elno, mesh, "VARI_NOEU", support);

@@ -48,7 +48,7 @@ class Builder {
     start_.assign(cells_.size() + 1, 0);
     for (std::size_t k = 0; k < cells_.size(); ++k) {
       position_[cells_[k]] = static_cast<int>(k);
-      start_[k + 1] = start_[k] + post::modelGaussPointCount(mesh.cellType(cells_[k]));
+      start_[k + 1] = start_[k] + post::modelGaussPointCount(mesh.cellType(cells_[k]), model_->axisymmetric());
     }
   }
   const model::Model& model() const { return *model_; }
@@ -224,7 +224,7 @@ ConceptPtr disc(const Keywords& k, const std::string& typeCham, const std::strin
     bool whole = true;
     for (int n : nodes) whole = whole && defined[n];
     if (!whole && !prolZero) continue;  // the field is not defined on the whole cell
-    const post::CellGaussPoints g = post::modelGaussPoints(mesh, cell);
+    const post::CellGaussPoints g = post::modelGaussPoints(mesh, cell, model->axisymmetric());
     for (std::size_t c = 0; c < nc; ++c) {
       double* out = b.values(comps[c], kc);
       for (int q = 0; q < g.count; ++q) {
@@ -414,7 +414,7 @@ ConceptPtr extr(const Keywords& k, const std::string& typeCham, const std::strin
   if (quantity != expected) throw Error("NOM_CHAM='" + name + "' gives an ELGA_" + expected + "_R field, not " + typeCham);
   const auto& mesh = result->model->mesh();
   for (std::size_t kc = 0; kc < g->cells.size(); ++kc)
-    if (pointsOf(*g, kc) != post::modelGaussPointCount(mesh.cellType(g->cells[kc])))
+    if (pointsOf(*g, kc) != post::modelGaussPointCount(mesh.cellType(g->cells[kc]), result->model->axisymmetric()))
       throw Error("NOM_CHAM='" + name + "': cell " + mesh.cellName(g->cells[kc]) + " holds " +
                   std::to_string(pointsOf(*g, kc)) + " points, not those of the model's integration scheme");
   auto out = std::make_shared<ElgaFieldConcept>(result->model, quantity, *g);

@@ -34,9 +34,10 @@ void checkSupport(const mesh::Mesh& mesh, const std::vector<int>& support, const
 }
 
 // The L2 norm of a field at Gauss points over `cells`.
-double elgaNorm(const mesh::Mesh& mesh, const CellFieldConcept& f, const std::vector<int>& cells,
+double elgaNorm(const model::Model& model, const CellFieldConcept& f, const std::vector<int>& cells,
                 const std::vector<int>& comps, const std::vector<double>& weights, const std::string& what,
                 const std::string& part) {
+  const auto& mesh = model.mesh();
   std::vector<int> position(mesh.cellCount(), -1);
   for (std::size_t k = 0; k < f.field.cells.size(); ++k) position[f.field.cells[k]] = static_cast<int>(k);
   const std::size_t nc = f.field.components.size();
@@ -51,7 +52,7 @@ double elgaNorm(const mesh::Mesh& mesh, const CellFieldConcept& f, const std::ve
         throw Error("NORME: component " + f.field.components[c] + " of the field " + what +
                     " is not defined on cell " + mesh.cellName(cell) + " of " + part +
                     " (NOM_CMP chooses the components; CREA_CHAMP's PROL_ZERO='OUI' makes missing ones zero)");
-    const post::CellGaussPoints g = post::modelGaussPoints(mesh, cell);
+    const post::CellGaussPoints g = post::modelGaussPoints(mesh, cell, model.axisymmetric());
     if (dim >= 0 && g.dimension != dim)
       throw Error("NORME: " + part + " mixes surface and edge cells (cell " + mesh.cellName(cell) +
                   "); integrate surfaces and edges separately");
@@ -104,7 +105,7 @@ ConceptPtr elgaNorms(const Keywords& k, const Keywords& occ, const CellFieldConc
   for (const auto& n : names) cmpList += (cmpList.empty() ? "" : " ") + n;
   post::Table table;
   for (const auto& part : parts) {
-    const double norm = elgaNorm(model.mesh(), f, part.cells, comps, weights, what,
+    const double norm = elgaNorm(model, f, part.cells, comps, weights, what,
                                  part.name == "TOUT" ? std::string("the model") : "GROUP_MA " + part.name);
     table.addRow({{"GROUP_MA", post::TableValue::ofText(part.name)},
                   {"NOM_CMP", post::TableValue::ofText(cmpList)},

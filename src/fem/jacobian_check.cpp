@@ -35,7 +35,7 @@ void count(JacobianSigns& s, double det) {
 
 }  // namespace
 
-JacobianSigns jacobianSigns(const mesh::Mesh& mesh, int cell) {
+JacobianSigns jacobianSigns(const mesh::Mesh& mesh, int cell, bool axisymmetric) {
   JacobianSigns s;
   s.smallest = std::numeric_limits<double>::infinity();
   const mesh::CellType type = mesh.cellType(cell);
@@ -54,7 +54,7 @@ JacobianSigns jacobianSigns(const mesh::Mesh& mesh, int cell) {
       constexpr CellType T = decltype(tag)::value;
       NodeCoords<T> X;
       coordinates(X);
-      const auto& rule = fullSurfaceRule(T);
+      const auto& rule = fullSurfaceRule(T, axisymmetric);
       for (int q = 0; q < rule.size(); ++q) count(s, (X.transpose() * Cell<T>::gradients(rule.points[q])).determinant());
     });
   } else {

@@ -13,6 +13,7 @@ struct JacobianSigns {
   int positive = 0, negative = 0, zero = 0;
   double smallest = 0;  // the determinant (the length ratio) nearest to zero or below
 };
-JacobianSigns jacobianSigns(const mesh::Mesh& mesh, int cell);
+// `axisymmetric`: the cell is in an AXIS model (its TRIA6 rule differs).
+JacobianSigns jacobianSigns(const mesh::Mesh& mesh, int cell, bool axisymmetric);
 
 }  // namespace aster::fem

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 #include "core/error.hpp"
@@ -174,22 +175,97 @@ const QuadratureRule<2>& surfaceRule(CellType t, int degree) {
   }
 }
 
-const QuadratureRule<2>& fullSurfaceRule(CellType t) {
+namespace {
+
+// code_aster's families (elraga), with its coordinates, weights and point order.
+QuadratureRule<2> asterRule(std::initializer_list<std::array<double, 3>> xyw, int degree) {
+  QuadratureRule<2> r;
+  for (const auto& p : xyw) {
+    r.points.emplace_back(p[0], p[1]);
+    r.weights.push_back(p[2]);
+  }
+  r.degree = degree;
+  return r;
+}
+
+// TRIA FPG1: the centroid.
+const QuadratureRule<2>& triangleFpg1() {
+  static const auto r = asterRule({{1.0 / 3, 1.0 / 3, 0.5}}, 1);
+  return r;
+}
+// TRIA FPG3: three interior points, each at 1/6 from two sides.
+const QuadratureRule<2>& triangleFpg3() {
+  static const auto r = asterRule({{1.0 / 6, 1.0 / 6, 1.0 / 6}, {2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}}, 2);
+  return r;
+}
+// TRIA FPG6: Dunavant's degree-4 rule, the orbit near the vertices first.
+const QuadratureRule<2>& triangleFpg6() {
+  static const auto r = [] {
+    const double a = 0.445948490915965, b = 0.091576213509771;
+    const double wa = 0.111690794839005, wb = 0.054975871827661;
+    return asterRule({{b, b, wb}, {1 - 2 * b, b, wb}, {b, 1 - 2 * b, wb},
+                      {a, 1 - 2 * a, wa}, {a, a, wa}, {1 - 2 * a, a, wa}},
+                     4);
+  }();
+  return r;
+}
+// QUAD FPG4: 2x2 Gauss points counterclockwise from (-,-).
+const QuadratureRule<2>& quadrangleFpg4() {
+  static const auto r = [] {
+    const double a = 1 / std::sqrt(3.0);
+    return asterRule({{-a, -a, 1.0}, {a, -a, 1.0}, {a, a, 1.0}, {-a, a, 1.0}}, 3);
+  }();
+  return r;
+}
+// QUAD FPG9: 3x3 Gauss points, the corners counterclockwise from (-,-), then the
+// mid-edges counterclockwise from the edge y = -a, then the centre.
+const QuadratureRule<2>& quadrangleFpg9() {
+  static const auto r = [] {
+    const double a = std::sqrt(0.6), wc = 25.0 / 81, we = 40.0 / 81, wm = 64.0 / 81;
+    return asterRule({{-a, -a, wc}, {a, -a, wc}, {a, a, wc}, {-a, a, wc},
+                      {0, -a, we}, {a, 0, we}, {0, a, we}, {-a, 0, we}, {0, 0, wm}},
+                     5);
+  }();
+  return r;
+}
+
+QuadratureRule<1> asterEdgeRule(std::initializer_list<std::array<double, 2>> xw, int degree) {
+  QuadratureRule<1> r;
+  for (const auto& p : xw) {
+    r.points.emplace_back(p[0]);
+    r.weights.push_back(p[1]);
+  }
+  r.degree = degree;
+  return r;
+}
+
+}  // namespace
+
+const QuadratureRule<2>& fullSurfaceRule(CellType t, bool axisymmetric) {
   switch (t) {
-    case CellType::TRIA3: return gaussTriangle(1);
-    case CellType::TRIA6: return gaussTriangle(4);
-    case CellType::QUAD4: return gaussQuadrangle(2);
+    case CellType::TRIA3: return triangleFpg1();
+    case CellType::TRIA6: return axisymmetric ? triangleFpg6() : triangleFpg3();
+    case CellType::QUAD4: return quadrangleFpg4();
     case CellType::QUAD8:
-    case CellType::QUAD9: return gaussQuadrangle(3);
+    case CellType::QUAD9: return quadrangleFpg9();
     default: break;
   }
   throw Error(std::string("surface quadrature requested for the edge cell ") + cellName(t));
 }
 
 const QuadratureRule<1>& fullEdgeRule(CellType t) {
+  // SEG2 FPG2: +a first; SEG3 FPG3: -a, 0, +a.
+  static const auto seg2 = [] {
+    const double a = 1 / std::sqrt(3.0);
+    return asterEdgeRule({{a, 1.0}, {-a, 1.0}}, 3);
+  }();
+  static const auto seg3 = [] {
+    const double a = std::sqrt(0.6);
+    return asterEdgeRule({{-a, 5.0 / 9}, {0.0, 8.0 / 9}, {a, 5.0 / 9}}, 5);
+  }();
   switch (t) {
-    case CellType::SEG2: return gaussLegendre(2);
-    case CellType::SEG3: return gaussLegendre(3);
+    case CellType::SEG2: return seg2;
+    case CellType::SEG3: return seg3;
     default: break;
   }
   throw Error(std::string("edge quadrature requested for the surface cell ") + cellName(t));

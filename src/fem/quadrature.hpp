@@ -38,10 +38,16 @@ const QuadratureRule<2>& surfaceRule(CellType t, int degree);
 // A rule exact to at least `degree` on [-1,1].
 const QuadratureRule<1>& edgeRule(int degree);
 
-// Full integration of the stiffness of an undistorted cell, as code_aster's
-// mechanics does: TRIA3 1 point, TRIA6 6 points (degree 4), QUAD4 2x2,
-// QUAD8 and QUAD9 3x3; SEG2 2 points, SEG3 3 points.
-const QuadratureRule<2>& fullSurfaceRule(CellType t);
+// The integration points of code_aster's plane mechanical elements (the RIGI
+// family of its element catalogue), with its coordinates, weights and point
+// order, so that a point number k means the same point: TRIA3 FPG1 (centroid);
+// TRIA6 FPG3 (interior points (1/6,1/6), (2/3,1/6), (1/6,2/3)), FPG6 in AXIS
+// (Dunavant's degree 4); QUAD4 FPG4 (2x2, counterclockwise from (-,-)); QUAD8
+// and QUAD9 FPG9 (3x3: corners, mid-edges, centre). Edge cells (fields at
+// Gauss points, norms): SEG2 FPG2 (+1/sqrt3, -1/sqrt3), SEG3 FPG3 (-sqrt(3/5),
+// 0, +sqrt(3/5)); code_aster's skin elements integrate SEG3 with FPG4, which
+// would move SSNP150B's Gauss-point pressure rate (norms on its contact edge).
+const QuadratureRule<2>& fullSurfaceRule(CellType t, bool axisymmetric);
 const QuadratureRule<1>& fullEdgeRule(CellType t);
 
 }  // namespace aster::fem

@@ -27,7 +27,8 @@ constexpr bool kHasAvx2Build = std::is_same_v<Law, IsotropicElasticity>;
 
 template <CellType T, class Law>
 PlaneElement<T, Law>::PlaneElement(std::shared_ptr<const Law> law, Kinematics kinematics)
-    : PlaneElement(std::move(law), kinematics, fem::fullSurfaceRule(T)) {}
+    : PlaneElement(law, kinematics,
+                   fem::fullSurfaceRule(T, law && law->hypothesis() == PlaneHypothesis::Axisymmetric)) {}
 
 template <CellType T, class Law>
 PlaneElement<T, Law>::PlaneElement(std::shared_ptr<const Law> law, Kinematics kinematics,

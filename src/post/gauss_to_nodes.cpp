@@ -56,19 +56,20 @@ Eigen::MatrixXd gaussToNodesMatrix(fem::CellType type, const std::vector<Eigen::
   return G;
 }
 
-const Eigen::MatrixXd& modelGaussToNodes(fem::CellType type) {
+const Eigen::MatrixXd& modelGaussToNodes(fem::CellType type, bool axisymmetric) {
   static const auto matrices = [] {
-    std::array<Eigen::MatrixXd, 7> m;
-    for (fem::CellType t : {fem::CellType::TRIA3, fem::CellType::TRIA6, fem::CellType::QUAD4, fem::CellType::QUAD8,
-                            fem::CellType::QUAD9}) {
-      const auto& rule = fem::fullSurfaceRule(t);
-      std::vector<Eigen::Vector2d> points(rule.points.begin(), rule.points.end());
-      m[static_cast<int>(t)] = gaussToNodesMatrix(t, points);
-    }
+    std::array<std::array<Eigen::MatrixXd, 7>, 2> m;  // [axisymmetric][type]
+    for (int axis = 0; axis < 2; ++axis)
+      for (fem::CellType t : {fem::CellType::TRIA3, fem::CellType::TRIA6, fem::CellType::QUAD4, fem::CellType::QUAD8,
+                              fem::CellType::QUAD9}) {
+        const auto& rule = fem::fullSurfaceRule(t, axis == 1);
+        std::vector<Eigen::Vector2d> points(rule.points.begin(), rule.points.end());
+        m[axis][static_cast<int>(t)] = gaussToNodesMatrix(t, points);
+      }
     return m;
   }();
   if (fem::cellDimension(type) != 2) gaussToNodesMatrix(type, {});  // throws with the message
-  return matrices[static_cast<int>(type)];
+  return matrices[axisymmetric ? 1 : 0][static_cast<int>(type)];
 }
 
 void extrapolateToNodes(const Eigen::MatrixXd& G, const double* in, int components, double* out) {

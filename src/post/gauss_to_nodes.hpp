@@ -23,8 +23,9 @@ namespace aster::post {
 // edge cell or when the points cannot determine the vertex fit.
 Eigen::MatrixXd gaussToNodesMatrix(fem::CellType type, const std::vector<Eigen::Vector2d>& points);
 
-// The matrix for the model's integration points (fem::fullSurfaceRule), built once per type.
-const Eigen::MatrixXd& modelGaussToNodes(fem::CellType type);
+// The matrix for the model's integration points (fem::fullSurfaceRule; AXIS when
+// `axisymmetric`), built once per type.
+const Eigen::MatrixXd& modelGaussToNodes(fem::CellType type, bool axisymmetric);
 
 // out[a * components + c] = sum_q G(a, q) in[q * components + c].
 void extrapolateToNodes(const Eigen::MatrixXd& G, const double* in, int components, double* out);

@@ -89,10 +89,10 @@ void edgeCell(const mesh::Mesh& mesh, int cell, Accumulator& acc) {
 }
 
 template <fem::CellType T>
-void surfaceGaussPoints(const mesh::Mesh& mesh, int cell, CellGaussPoints& g) {
+void surfaceGaussPoints(const mesh::Mesh& mesh, int cell, bool axisymmetric, CellGaussPoints& g) {
   using C = fem::Cell<T>;
   const fem::NodeCoords<T> X = coordinatesOf<T>(mesh, cell);
-  const auto& rule = fem::fullSurfaceRule(T);
+  const auto& rule = fem::fullSurfaceRule(T, axisymmetric);
   for (int q = 0; q < rule.size(); ++q) {
     const auto N = C::values(rule.points[q]);
     const auto J = fem::jacobian<T>(X, C::gradients(rule.points[q]));
@@ -122,11 +122,11 @@ void edgeGaussPoints(const mesh::Mesh& mesh, int cell, CellGaussPoints& g) {
 
 }  // namespace
 
-CellGaussPoints modelGaussPoints(const mesh::Mesh& mesh, int cell) {
+CellGaussPoints modelGaussPoints(const mesh::Mesh& mesh, int cell, bool axisymmetric) {
   const fem::CellType t = fem::referenceCell(mesh.cellType(cell), "fields at Gauss points");
   CellGaussPoints g;
   if (fem::cellDimension(t) == 2)
-    fem::dispatchSurface(t, [&](auto tag) { surfaceGaussPoints<decltype(tag)::value>(mesh, cell, g); });
+    fem::dispatchSurface(t, [&](auto tag) { surfaceGaussPoints<decltype(tag)::value>(mesh, cell, axisymmetric, g); });
   else
     fem::dispatchEdge(t, [&](auto tag) { edgeGaussPoints<decltype(tag)::value>(mesh, cell, g); });
   const auto nodes = mesh.cellNodes(cell);
@@ -139,9 +139,9 @@ CellGaussPoints modelGaussPoints(const mesh::Mesh& mesh, int cell) {
   return g;
 }
 
-int modelGaussPointCount(mesh::CellType type) {
+int modelGaussPointCount(mesh::CellType type, bool axisymmetric) {
   const fem::CellType t = fem::referenceCell(type, "fields at Gauss points");
-  return fem::cellDimension(t) == 2 ? fem::fullSurfaceRule(t).size() : fem::fullEdgeRule(t).size();
+  return fem::cellDimension(t) == 2 ? fem::fullSurfaceRule(t, axisymmetric).size() : fem::fullEdgeRule(t).size();
 }
 
 L2Result l2Norms(const mesh::Mesh& mesh, const std::vector<int>& cells, const NodalValues& field,

@@ -40,10 +40,10 @@ L2Result l2Norms(const mesh::Mesh& mesh, const std::vector<int>& cells, const No
 
 // The integration points of the model on one cell, those the mechanics
 // integrates with and fields at Gauss points (ELGA) live on: the full rule of
-// surface cells (fem::fullSurfaceRule: TRIA3 1 point, TRIA6 6, QUAD4 2x2,
-// QUAD8 and QUAD9 3x3) and the segment's own rule on edge cells
-// (fem::fullEdgeRule: SEG2 2 points, SEG3 3), in the rule's order (on
-// quadrangles xi varies fastest, each coordinate increasing).
+// surface cells (fem::fullSurfaceRule, code_aster's families and point order:
+// TRIA3 1 point, TRIA6 3 (6 in AXIS), QUAD4 4, QUAD8 and QUAD9 9) and the
+// segment's own rule on edge cells (fem::fullEdgeRule: SEG2 2 points, SEG3 4).
+// `axisymmetric`: the model is AXIS.
 struct CellGaussPoints {
   int count = 0;                 // points
   int nodes = 0;                 // nodes of the cell
@@ -52,8 +52,8 @@ struct CellGaussPoints {
   std::vector<double> shape;     // shape[q * nodes + a] = N_a at point q
   std::vector<double> xyz;       // per point: x, y, z (interpolated from the nodes)
 };
-CellGaussPoints modelGaussPoints(const mesh::Mesh& mesh, int cell);
+CellGaussPoints modelGaussPoints(const mesh::Mesh& mesh, int cell, bool axisymmetric);
 // The number of those points on a cell of this type (throws for other types).
-int modelGaussPointCount(mesh::CellType type);
+int modelGaussPointCount(mesh::CellType type, bool axisymmetric);
 
 }  // namespace aster::post

@@ -16,9 +16,10 @@ void cellStrains(const double* Xp, const double* up, StrainMeasure measure, OutO
       X(a, d) = Xp[2 * a + d];
       u(a, d) = up[2 * a + d];
     }
-  const auto& rule = fem::fullSurfaceRule(T);
+  const auto& rule = fem::fullSurfaceRule(T, zz.axisymmetric);
   for (int q = 0; q < rule.size(); ++q) {
     const auto dN = C::gradients(rule.points[q]);
+    const auto N = C::values(rule.points[q]);
     const auto j = fem::jacobian<T>(X, dN);
     const auto dNx = fem::physicalGradients<T>(dN, j);
     const Eigen::Matrix2d H = u.transpose() * dNx;  // H_ij = du_i/dx_j
@@ -27,7 +28,12 @@ void cellStrains(const double* Xp, const double* up, StrainMeasure measure, OutO
     double* o = out + q * kStrainComponents;
     o[0] = e(0, 0);
     o[1] = e(1, 1);
-    o[2] = zz.planeStress ? -zz.nu / (1 - zz.nu) * (e(0, 0) + e(1, 1)) : 0.0;
+    if (zz.axisymmetric) {
+      const double hoop = u.col(0).dot(N) / X.col(0).dot(N);  // u_r / r
+      o[2] = measure == StrainMeasure::GreenLagrange ? hoop + 0.5 * hoop * hoop : hoop;
+    } else {
+      o[2] = zz.planeStress ? -zz.nu / (1 - zz.nu) * (e(0, 0) + e(1, 1)) : 0.0;
+    }
     o[3] = e(0, 1);
   }
 }
@@ -39,6 +45,8 @@ void gaussStrains(fem::CellType type, const double* X, const double* u, StrainMe
   fem::dispatchSurface(type, [&](auto tag) { cellStrains<decltype(tag)::value>(X, u, measure, zz, out); });
 }
 
-int strainPointCount(fem::CellType type) { return fem::fullSurfaceRule(type).size(); }
+int strainPointCount(fem::CellType type, bool axisymmetric) {
+  return fem::fullSurfaceRule(type, axisymmetric).size();
+}
 
 }  // namespace aster::post

@@ -263,8 +263,9 @@ CH = CREA_CHAMP{TYPE_CHAM='NOEU_NEUT_R', OPERATION='AFFE', MAILLAGE=MAIL, AFFE={
 
 // ------------------------------------------------------------ fields at Gauss points
 // On SURFACE (M6, the unit square: x = (1 + xi) / 2, y = (1 + eta) / 2) the model
-// integrates with 3 x 3 Gauss points xi, eta in {-a, 0, a}, a = sqrt(3/5), xi
-// varying fastest: point q = i + 3 j + 1. On BAS (M4, from N4 (1,0) to N1 (0,0))
+// integrates with code_aster's FPG9, 3 x 3 Gauss points xi, eta in {-a, 0, a},
+// a = sqrt(3/5), numbered as code_aster does: the corners counterclockwise from
+// (-a, -a), the mid-edges counterclockwise from (0, -a), the centre. On BAS (M4, from N4 (1,0) to N1 (0,0))
 // a SEG3 has 3 points, x = (1 - s) / 2 for s = -a, 0, a. Expected values below
 // come from these formulas, not from the program.
 namespace {
@@ -272,9 +273,9 @@ namespace {
 const char* kGaussPoints = R"(
 local a = math.sqrt(0.6)
 XI = {-a, 0.0, a}
+FPG9 = {{-a, -a}, {a, -a}, {a, a}, {-a, a}, {0, -a}, {a, 0}, {0, a}, {-a, 0}, {0, 0}}
 function surfacePoint(q)  -- q = 1..9 -> x, y on M6
-  local i, j = (q - 1) % 3, (q - 1) // 3
-  return (1 + XI[i + 1]) / 2, (1 + XI[j + 1]) / 2
+  return (1 + FPG9[q][1]) / 2, (1 + FPG9[q][2]) / 2
 end
 MODT = AFFE_MODELE{MAILLAGE=MAIL, AFFE={TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'}}
 GEOM = CREA_CHAMP{TYPE_CHAM='NOEU_GEOM_R', OPERATION='EXTR', MAILLAGE=MAIL, NOM_CHAM='GEOMETRIE'}

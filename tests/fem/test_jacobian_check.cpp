@@ -24,28 +24,28 @@ Mesh cell(CellType t, const std::vector<Eigen::Vector3d>& x) {
 }  // namespace
 
 TEST(JacobianCheck, Quad4CounterclockwiseClockwiseAndBowTie) {
-  auto s = jacobianSigns(cell(CellType::QUAD4, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}), 0);
+  auto s = jacobianSigns(cell(CellType::QUAD4, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}), 0, false);
   EXPECT_EQ(s.positive, 4);
   EXPECT_EQ(s.negative + s.zero, 0);
   EXPECT_DOUBLE_EQ(s.smallest, 0.25);
-  s = jacobianSigns(cell(CellType::QUAD4, {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}}), 0);
+  s = jacobianSigns(cell(CellType::QUAD4, {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}}), 0, false);
   EXPECT_EQ(s.negative, 4);
   EXPECT_EQ(s.positive + s.zero, 0);
   EXPECT_DOUBLE_EQ(s.smallest, -0.25);
-  s = jacobianSigns(cell(CellType::QUAD4, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}), 0);
+  s = jacobianSigns(cell(CellType::QUAD4, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}), 0, false);
   EXPECT_GT(s.positive, 0);
   EXPECT_GT(s.negative, 0);
 }
 
 TEST(JacobianCheck, CollinearTriangleAndZeroLengthSegmentAreDegenerate) {
-  auto s = jacobianSigns(cell(CellType::TRIA3, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}), 0);
+  auto s = jacobianSigns(cell(CellType::TRIA3, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}), 0, false);
   EXPECT_EQ(s.zero, 1);
   EXPECT_EQ(s.positive + s.negative, 0);
-  s = jacobianSigns(cell(CellType::SEG2, {{1, 1, 0}, {1, 1, 0}}), 0);
+  s = jacobianSigns(cell(CellType::SEG2, {{1, 1, 0}, {1, 1, 0}}), 0, false);
   EXPECT_EQ(s.zero, 2);
-  s = jacobianSigns(cell(CellType::SEG3, {{0, 0, 0}, {2, 0, 0}, {1, 0, 0}}), 0);
+  s = jacobianSigns(cell(CellType::SEG3, {{0, 0, 0}, {2, 0, 0}, {1, 0, 0}}), 0, false);
   EXPECT_EQ(s.positive, 3);
   EXPECT_DOUBLE_EQ(s.smallest, 1.0);  // |dx/dxi| = half the length
-  s = jacobianSigns(cell(CellType::POI1, {{0, 0, 0}}), 0);  // not checked
+  s = jacobianSigns(cell(CellType::POI1, {{0, 0, 0}}), 0, false);  // not checked
   EXPECT_EQ(s.positive + s.negative + s.zero, 0);
 }

@@ -41,9 +41,9 @@ double field(int c, bool triangle, const Eigen::Vector2d& p) {
   return -3.0 + 0.5 * x - 4.0 * y + (triangle ? 0.0 : -1.125 * x * y);
 }
 
-void checkExact(CellType t, bool constantOnly) {
-  const auto& rule = fem::fullSurfaceRule(t);
-  const Eigen::MatrixXd& G = post::modelGaussToNodes(t);
+void checkExact(CellType t, bool constantOnly, bool axisymmetric) {
+  const auto& rule = fem::fullSurfaceRule(t, axisymmetric);
+  const Eigen::MatrixXd& G = post::modelGaussToNodes(t, axisymmetric);
   const bool triangle = t == CellType::TRIA3 || t == CellType::TRIA6;
   ASSERT_EQ(G.rows(), fem::cellNodeCount(t));
   ASSERT_EQ(G.cols(), rule.size());
@@ -62,11 +62,30 @@ void checkExact(CellType t, bool constantOnly) {
 
 }  // namespace
 
-TEST(GaussToNodes, Tria3OnePointGivesItsValueToEveryNode) { checkExact(CellType::TRIA3, true); }
-TEST(GaussToNodes, Tria6LinearFieldIsExact) { checkExact(CellType::TRIA6, false); }
-TEST(GaussToNodes, Quad4BilinearFieldIsExact) { checkExact(CellType::QUAD4, false); }
-TEST(GaussToNodes, Quad8BilinearFieldIsExact) { checkExact(CellType::QUAD8, false); }
-TEST(GaussToNodes, Quad9BilinearFieldIsExact) { checkExact(CellType::QUAD9, false); }
+// Each in plane (D_PLAN, C_PLAN) and AXIS models (TRIA6: FPG3, FPG6).
+TEST(GaussToNodes, Tria3OnePointGivesItsValueToEveryNode) {
+  for (bool axis : {false, true}) checkExact(CellType::TRIA3, true, axis);
+}
+TEST(GaussToNodes, Tria6LinearFieldIsExact) {
+  for (bool axis : {false, true}) checkExact(CellType::TRIA6, false, axis);
+}
+TEST(GaussToNodes, Quad4BilinearFieldIsExact) {
+  for (bool axis : {false, true}) checkExact(CellType::QUAD4, false, axis);
+}
+TEST(GaussToNodes, Quad8BilinearFieldIsExact) {
+  for (bool axis : {false, true}) checkExact(CellType::QUAD8, false, axis);
+}
+TEST(GaussToNodes, Quad9BilinearFieldIsExact) {
+  for (bool axis : {false, true}) checkExact(CellType::QUAD9, false, axis);
+}
+
+TEST(GaussToNodes, Tria6Fpg3MatrixHasItsClosedForm) {
+  // The P1 functions at the FPG3 points are 2/3 at the nearest vertex and 1/6 at the
+  // others; the inverse of that matrix: 5/3 on the diagonal, -1/3 elsewhere.
+  const Eigen::MatrixXd& G = post::modelGaussToNodes(CellType::TRIA6, false);
+  for (int a = 0; a < 3; ++a)
+    for (int q = 0; q < 3; ++q) EXPECT_NEAR(G(a, q), a == q ? 5.0 / 3 : -1.0 / 3, 1e-14) << a << "," << q;
+}
 
 TEST(GaussToNodes, Quad4MatrixHasItsClosedForm) {
   const double g = 1 / std::sqrt(3.0);
@@ -93,10 +112,10 @@ TEST(GaussToNodes, QuadraticFieldIsFittedByLeastSquaresNotInterpolated) {
   // best bilinear fit is the constant mean 0.4 (the odd part is zero by symmetry), which
   // every node gets, where an interpolation through the 9 points would give 1 at the corners.
   for (CellType t : {CellType::QUAD8, CellType::QUAD9}) {
-    const auto& rule = fem::fullSurfaceRule(t);
+    const auto& rule = fem::fullSurfaceRule(t, false);
     std::vector<double> in(rule.size()), out(fem::cellNodeCount(t));
     for (int q = 0; q < rule.size(); ++q) in[q] = rule.points[q](1) * rule.points[q](1);
-    post::extrapolateToNodes(post::modelGaussToNodes(t), in.data(), 1, out.data());
+    post::extrapolateToNodes(post::modelGaussToNodes(t, false), in.data(), 1, out.data());
     for (double v : out) EXPECT_NEAR(v, 0.4, 1e-13) << fem::cellName(t);
   }
 }

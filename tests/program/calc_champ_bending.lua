@@ -1,5 +1,5 @@
 -- expect-exit: 0
--- expect-output: CALC_CHAMP: EPSI_ELNO, EPSI_NOEU, SIEQ_ELNO, SIEQ_NOEU, SIGM_ELNO, SIGM_NOEU at 1 instant\(s\), on 8 cell\(s\).*CALC_CHAMP: SIGM_ELNO, SIGM_NOEU at 1 instant\(s\), on 4 cell\(s\).*<I> checks: 17 OK, 0 NOOK
+-- expect-output: CALC_CHAMP: EPSI_ELNO, EPSI_NOEU, SIEQ_ELNO, SIEQ_NOEU, SIGM_ELNO, SIGM_NOEU at 1 instant\(s\), on 8 cell\(s\).*CALC_CHAMP: SIGM_ELNO, SIGM_NOEU at 1 instant\(s\), on 4 cell\(s\).*<I> checks: 19 OK, 0 NOOK
 -- MECA_STATIQUE + CALC_CHAMP + TEST_RESU on a stress that varies: pure bending of the
 -- beam [0, 4] x [-0.5, 0.5] in plane stress (4 x 2 QUAD8, calc_champ_bending.mail),
 -- E = 1000, NU = 0.25, with the exact displacement imposed on the whole boundary:
@@ -8,8 +8,10 @@
 -- one), and whose stress is SIXX = E K y alone. QUAD8 holds this displacement exactly, so
 -- the stresses at the Gauss points are exact; the extrapolation to the cell nodes
 -- reproduces a field linear in the reference coordinates, so SIGM_ELNO and SIGM_NOEU are
--- exact too. Cell M8 = [3, 4] x [0, 0.5]: its Gauss point 1 is at eta = -sqrt(3/5), y =
--- 0.25 (1 - sqrt(3/5)), point 9 at y = 0.25 (1 + sqrt(3/5)) (xi fastest). NA = (4, 0.5),
+-- exact too. Cell M8 = [3, 4] x [0, 0.5]: code_aster's FPG9 numbers the corner points
+-- counterclockwise, then the mid-edge points, then the centre: point 1 is at eta =
+-- -sqrt(3/5), y = 0.25 (1 - sqrt(3/5)), point 3 at y = 0.25 (1 + sqrt(3/5)), point 9 (the
+-- centre) at y = 0.25, point 7 (mid-edge, eta = sqrt(3/5)) as point 3. NA = (4, 0.5),
 -- NB = (2, 0.5), NC = (3, 0.25). SIEQ at NA: SIXX = 5 alone, VMIS = TRESCA = PRIN_3 = 5,
 -- PRIN_1 = PRIN_2 = 0, TRIAX = 1/3. CALC_CHAMP without reuse makes a new result; with
 -- GROUP_MA the nodal mean is over those cells only (NB lies on M7, in HALF_RIGHT).
@@ -37,7 +39,9 @@ local function check(t)
 end
 TEST_RESU{RESU = {
   check{RESULTAT = R, NOM_CHAM = 'SIEF_ELGA', GROUP_MA = 'CELL_A', POINT = 1, NOM_CMP = 'SIXX', v = E * K * 0.25 * (1 - a)},
-  check{RESULTAT = R, NOM_CHAM = 'SIEF_ELGA', MAILLE = 'M8', POINT = 9, NOM_CMP = 'SIXX', v = E * K * 0.25 * (1 + a)},
+  check{RESULTAT = R, NOM_CHAM = 'SIEF_ELGA', MAILLE = 'M8', POINT = 3, NOM_CMP = 'SIXX', v = E * K * 0.25 * (1 + a)},
+  check{RESULTAT = R, NOM_CHAM = 'SIEF_ELGA', MAILLE = 'M8', POINT = 7, NOM_CMP = 'SIXX', v = E * K * 0.25 * (1 + a)},
+  check{RESULTAT = R, NOM_CHAM = 'SIEF_ELGA', MAILLE = 'M8', POINT = 9, NOM_CMP = 'SIXX', v = E * K * 0.25},
   check{RESULTAT = R2, NOM_CHAM = 'SIGM_ELNO', MAILLE = 'M8', GROUP_NO = 'NA', NOM_CMP = 'SIXX', v = E * K * 0.5},
   check{RESULTAT = R2, NOM_CHAM = 'SIGM_ELNO', GROUP_MA = 'CELL_A', GROUP_NO = 'NC', NOM_CMP = 'SIXX', v = E * K * 0.25},
   check{RESULTAT = R2, NOM_CHAM = 'SIGM_ELNO', GROUP_MA = 'CELL_A', POINT = 8, NOM_CMP = 'SIXX', v = E * K * 0.25},

@@ -78,8 +78,8 @@ end
 local RAMPE = DEFI_FONCTION{NOM_PARA = 'INST', VALE = {0.0, 0.0, 1.0, 1.0}}
 local L = DEFI_LIST_REEL{VALE = {0.5, 1.0}}
 local MAT = DEFI_MATERIAU{ELAS = {E = E, NU = NU}}
--- Points per cell of the model's rule, nodes per cell.
-local layout = {TRIA3 = {8, 1, 3}, TRIA6 = {8, 6, 6}, QUAD4 = {4, 4, 4}, QUAD8 = {4, 9, 8}, QUAD9 = {4, 9, 9}}
+-- Points per cell of the model's rule (code_aster's FPG1, FPG3, FPG4, FPG9), nodes per cell.
+local layout = {TRIA3 = {8, 1, 3}, TRIA6 = {8, 3, 6}, QUAD4 = {4, 4, 4}, QUAD8 = {4, 9, 8}, QUAD9 = {4, 9, 9}}
 
 for _, cell in ipairs({'TRIA3', 'TRIA6', 'QUAD4', 'QUAD8', 'QUAD9'}) do
   for _, modelisation in ipairs({'D_PLAN', 'C_PLAN'}) do
