@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "commands/field_output.hpp"
 #include "commands/function_concepts.hpp"
 #include "commands/mesh_concept.hpp"
 #include "commands/result_concepts.hpp"
@@ -158,10 +159,6 @@ Item resolve(const Keywords& occ, bool textFormat) {
           for (const auto& x : ri->cells)
             if (x.name == name) g = &x;
           if (g) {
-            if (!textFormat)
-              throw Error("NOM_CHAM='" + name +
-                          "' is a field at Gauss points; aster-lite writes it in FORMAT='RESULTAT' only "
-                          "(MED, GMSH and VTK take nodal fields)");
             gauss.push_back(g);
             continue;
           }
@@ -169,6 +166,8 @@ Item resolve(const Keywords& occ, bool textFormat) {
           fi.fields.push_back(keepComponents(f, cmps, item.mesh->nodeCount(), f.name));
         }
       }
+      if (!textFormat)
+        for (const CellField* g : gauss) fi.cellFields.push_back(cellValuesOf(*item.mesh, *g));
       item.instants.push_back(std::move(fi));
       item.cellFields.push_back(std::move(gauss));
     }
@@ -295,6 +294,14 @@ struct Merged {
   std::map<std::string, std::string> ownerOf;  // field name -> the concept it comes from
 };
 
+// code_aster's name of a result's field in a MED file: the result's name padded
+// to 8 characters with '_', then the field's (RESU____SIEF_ELGA).
+std::string medFieldName(const std::string& result, const std::string& field) {
+  std::string name = result;
+  if (name.size() < 8) name.resize(8, '_');
+  return name + field;
+}
+
 Merged merge(const std::vector<Item>& items, const std::string& format, Session& session) {
   Merged m;
   for (const Item& it : items) {
@@ -310,18 +317,28 @@ Merged merge(const std::vector<Item>& items, const std::string& format, Session&
       for (auto& x : m.instants)
         if (x.index == fi.index && x.time == fi.time) into = &x;
       if (!into) {
-        m.instants.push_back({fi.index, fi.time, {}});
+        m.instants.push_back({fi.index, fi.time, {}, {}});
         into = &m.instants.back();
       }
-      for (auto f : fi.fields) {
-        if (!it.isResult) f.name = session.nameOf(*it.owner);  // a CHAM_GD is known by its concept's name
+      const std::string owner = session.nameOf(*it.owner);
+      // A CHAM_GD is known by its concept's name; in MED a result's field by code_aster's name.
+      auto nameOf = [&](const std::string& field) {
+        std::string name = !it.isResult ? owner : format == "MED" ? medFieldName(owner, field) : field;
         for (const auto& other : into->fields)
-          if (other.name == f.name) {
-            f.name = session.nameOf(*it.owner) + "_" + f.name;
-            break;
-          }
-        m.ownerOf[f.name] = session.nameOf(*it.owner);
+          if (other.name == name) return owner + "_" + name;
+        for (const auto& other : into->cellFields)
+          if (other.name == name) return owner + "_" + name;
+        return name;
+      };
+      for (auto f : fi.fields) {
+        f.name = nameOf(f.name);
+        m.ownerOf[f.name] = owner;
         into->fields.push_back(std::move(f));
+      }
+      for (auto f : fi.cellFields) {
+        f.name = nameOf(f.name);
+        m.ownerOf[f.name] = owner;
+        into->cellFields.push_back(std::move(f));
       }
     }
   }
@@ -450,14 +467,20 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
     // Field names must be new in the file: <concept>_<field>, else a number.
     std::map<std::string, std::string> renamed;
     std::set<std::string> used = record.fields;
-    for (const auto& fi : instants)
-      for (const auto& f : fi.fields)
-        if (!renamed.count(f.name)) {
-          renamed[f.name] = freeName(f.name, merged.ownerOf[f.name], used);
-          used.insert(renamed[f.name]);
-        }
-    for (auto& fi : instants)
+    auto rename = [&](const std::string& name) {
+      if (!renamed.count(name)) {
+        renamed[name] = freeName(name, merged.ownerOf[name], used);
+        used.insert(renamed[name]);
+      }
+    };
+    for (const auto& fi : instants) {
+      for (const auto& f : fi.fields) rename(f.name);
+      for (const auto& f : fi.cellFields) rename(f.name);
+    }
+    for (auto& fi : instants) {
       for (auto& f : fi.fields) f.name = renamed[f.name];
+      for (auto& f : fi.cellFields) f.name = renamed[f.name];
+    }
   }
 
   try {
@@ -487,9 +510,12 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
         mesh::writePvd(*merged.mesh, p, instants);
       } else {
         std::vector<mesh::NodalField> fields;
-        for (const auto& fi : instants)
+        std::vector<mesh::CellValues> cellFields;
+        for (const auto& fi : instants) {
           for (const auto& f : fi.fields) fields.push_back(f);
-        mesh::writeVtu(*merged.mesh, p, fields);
+          for (const auto& f : fi.cellFields) cellFields.push_back(f);
+        }
+        mesh::writeVtu(*merged.mesh, p, fields, cellFields);
       }
     });
   } catch (...) {
@@ -498,8 +524,10 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
   }
   if (format == "MED") {
     if (!meshPresent) record.meshes.emplace_back(merged.mesh, meshName);
-    for (const auto& fi : instants)
+    for (const auto& fi : instants) {
       for (const auto& f : fi.fields) record.fields.insert(f.name);
+      for (const auto& f : fi.cellFields) record.fields.insert(f.name);
+    }
   }
   if (format == "VTK" && merged.hasResult) removeStaleInstants(session, path);
 
@@ -508,8 +536,10 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
     if (add && format == "MED") {
       how += ": mesh " + meshName + (meshPresent ? " (already there)" : "");
       std::set<std::string> names;
-      for (const auto& fi : instants)
+      for (const auto& fi : instants) {
         for (const auto& f : fi.fields) names.insert(f.name);
+        for (const auto& f : fi.cellFields) names.insert(f.name);
+      }
       if (!names.empty()) {
         how += ", fields";
         for (const auto& n : names) how += " " + n;
