@@ -23,6 +23,7 @@
 
 #include "commands/field_output.hpp"
 #include "commands/function_concepts.hpp"
+#include "commands/instant_selection.hpp"
 #include "commands/mesh_concept.hpp"
 #include "commands/result_concepts.hpp"
 #include "commands/selection.hpp"
@@ -78,48 +79,6 @@ mesh::NodalField keepComponents(const mesh::NodalField& f, const std::vector<std
   return out;
 }
 
-std::vector<const ResultInstant*> selectInstants(const ResultConcept& r, const Keywords& occ) {
-  std::vector<const ResultInstant*> out;
-  if (occ.has("NUME_ORDRE")) {
-    for (long long n : [&] {
-           std::vector<long long> v;
-           for (const auto& x : occ.values("NUME_ORDRE")) v.push_back(x.integer);
-           return v;
-         }()) {
-      const ResultInstant* found = nullptr;
-      std::string list;
-      for (const auto& i : r.instants) {
-        if (i.index == n) found = &i;
-        list += (list.empty() ? "" : ", ") + std::to_string(i.index);
-      }
-      if (!found)
-        throw Error("NUME_ORDRE=" + std::to_string(n) + " is not stored in the result (NUME_ORDRE: " +
-                    (list.empty() ? std::string("none") : list) + ")");
-      out.push_back(found);
-    }
-    return out;
-  }
-  std::vector<double> times;
-  if (occ.has("INST")) times = occ.reals("INST");
-  if (occ.has("LIST_INST")) times = occ.concept<RealListConcept>("LIST_INST")->values;
-  if (!occ.has("INST") && !occ.has("LIST_INST")) {
-    for (const auto& i : r.instants) out.push_back(&i);
-    if (out.empty()) throw Error("RESULTAT: the result holds no instant");
-    return out;
-  }
-  const double precision = occ.real("PRECISION");
-  const bool absolute = occ.text("CRITERE") == "ABSOLU";
-  for (double t : times) {
-    const ResultInstant* found = nullptr;
-    if (absolute) {
-      for (const auto& i : r.instants)
-        if (!found && std::fabs(i.time - t) <= precision) found = &i;
-    }
-    out.push_back(found ? found : &r.at(t, precision));
-  }
-  return out;
-}
-
 Item resolve(const Keywords& occ, bool textFormat) {
   Item item;
   const std::vector<std::string> cmps = occ.texts("NOM_CMP");
@@ -145,7 +104,7 @@ Item resolve(const Keywords& occ, bool textFormat) {
     item.isResult = true;
     item.mesh = r->model->meshPtr();
     const std::vector<std::string> names = occ.texts("NOM_CHAM");
-    for (const ResultInstant* ri : selectInstants(*r, occ)) {
+    for (const ResultInstant* ri : selectedInstants(*r, occ)) {
       mesh::FieldInstant fi;
       fi.index = ri->index;
       fi.time = ri->time;
