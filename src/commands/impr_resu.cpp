@@ -1,6 +1,8 @@
 // IMPR_RESU: writes meshes, nodal fields (cham_no_sdaster) and results
-// (evol_noli: every selected instant's fields) as readable text (RESULTAT), MED,
-// GMSH (.msh 2.2 ASCII) or VTK (.vtu, or a .pvd collection for a result).
+// (evol_noli, evol_elas: every selected instant's nodal and cell fields) as
+// readable text (RESULTAT), MED (a result's fields under code_aster's names,
+// RESU____SIEF_ELGA), GMSH (.msh 2.2 ASCII) or VTK (.vtu, or a .pvd collection
+// for a result); what each format makes of a cell field: docs/manual.md.
 // The file is the one bound to UNITE (DEFI_FICHIER, -u N=path), else
 // <output>/<study>.resu.txt|.med|.msh|.vtu|.pvd. Files are written in a private
 // folder beside the target and renamed into place: an interrupted run or a full
@@ -250,7 +252,6 @@ struct Merged {
   ConceptPtr meshConcept;
   std::vector<mesh::FieldInstant> instants;
   bool hasResult = false;
-  std::map<std::string, std::string> ownerOf;  // field name -> the concept it comes from
 };
 
 // code_aster's name of a result's field in a MED file: the result's name padded
@@ -291,12 +292,10 @@ Merged merge(const std::vector<Item>& items, const std::string& format, Session&
       };
       for (auto f : fi.fields) {
         f.name = nameOf(f.name);
-        m.ownerOf[f.name] = owner;
         into->fields.push_back(std::move(f));
       }
       for (auto f : fi.cellFields) {
         f.name = nameOf(f.name);
-        m.ownerOf[f.name] = owner;
         into->cellFields.push_back(std::move(f));
       }
     }
@@ -329,10 +328,9 @@ std::map<std::string, Written>& writtenFiles() {
 }
 std::string keyOf(const fs::path& p) { return fs::absolute(p).lexically_normal().string(); }
 
-// `name`, else owner_name, else name_2, name_3...: the first not in `used`.
-std::string freeName(const std::string& name, const std::string& owner, const std::set<std::string>& used) {
+// `name`, else name_2, name_3...: the first not in `used`.
+std::string freeName(const std::string& name, const std::set<std::string>& used) {
   if (!used.count(name)) return name;
-  if (!owner.empty() && owner != name && !used.count(owner + "_" + name)) return owner + "_" + name;
   for (int n = 2;; ++n)
     if (!used.count(name + "_" + std::to_string(n))) return name + "_" + std::to_string(n);
 }
@@ -421,14 +419,14 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
     if (!meshPresent) {
       std::set<std::string> used;
       for (const auto& [m, name] : record.meshes) used.insert(name);
-      meshName = freeName(medMeshName(merged, session), "", used);
+      meshName = freeName(medMeshName(merged, session), used);
     }
-    // Field names must be new in the file: <concept>_<field>, else a number.
+    // Field names must be new in the file: else a number (RESU____DEPL_2).
     std::map<std::string, std::string> renamed;
     std::set<std::string> used = record.fields;
     auto rename = [&](const std::string& name) {
       if (!renamed.count(name)) {
-        renamed[name] = freeName(name, merged.ownerOf[name], used);
+        renamed[name] = freeName(name, used);
         used.insert(renamed[name]);
       }
     };
