@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "commands/field_concepts.hpp"
 #include "commands/field_output.hpp"
 #include "commands/function_concepts.hpp"
 #include "commands/instant_selection.hpp"
@@ -81,6 +82,26 @@ mesh::NodalField keepComponents(const mesh::NodalField& f, const std::vector<std
   return out;
 }
 
+// A cell field for the writers, with the components NOM_CMP names (all when empty).
+mesh::CellValues cellComponents(const mesh::Mesh& mesh, const CellField& f, const std::vector<std::string>& wanted) {
+  mesh::CellValues v = cellValuesOf(mesh, f);
+  if (wanted.empty()) return v;
+  std::vector<int> index;
+  for (const auto& w : wanted) index.push_back(componentIndex(f.components, w, f.name));
+  const std::size_t nc = f.components.size();
+  std::vector<double> values;
+  std::vector<int> offsets{0};
+  for (std::size_t k = 0; k < f.cells.size(); ++k) {
+    for (int p = 0; p < pointsOf(f, k); ++p)
+      for (int i : index) values.push_back(f.values[static_cast<std::size_t>(f.offsets[k]) + p * nc + i]);
+    offsets.push_back(static_cast<int>(values.size()));
+  }
+  v.components = wanted;
+  v.values = std::move(values);
+  v.offsets = std::move(offsets);
+  return v;
+}
+
 Item resolve(const Keywords& occ, bool textFormat) {
   Item item;
   const std::vector<std::string> cmps = occ.texts("NOM_CMP");
@@ -90,9 +111,17 @@ Item resolve(const Keywords& occ, bool textFormat) {
     given = std::static_pointer_cast<MeshConcept>(item.owner)->mesh;
     item.mesh = given;
   }
-  if (occ.has("CHAM_GD")) {
+  if (occ.has("CHAM_GD") && occ.concept<CellFieldConcept>("CHAM_GD")) {
+    auto g = occ.concept<CellFieldConcept>("CHAM_GD");  // a field on cells, known by its concept's name
+    item.owner = g;
+    item.mesh = g->mesh;
+    mesh::FieldInstant fi;
+    if (!textFormat) fi.cellFields.push_back(cellComponents(*g->mesh, g->field, cmps));
+    item.instants.push_back(std::move(fi));
+    item.cellFields.push_back({&g->field});
+  } else if (occ.has("CHAM_GD")) {
     auto f = occ.concept<NodalFieldConcept>("CHAM_GD");
-    if (!f) throw Error("CHAM_GD: only nodal fields (cham_no_sdaster) can be written");
+    if (!f) throw Error("CHAM_GD: only nodal fields (cham_no_sdaster) and fields on cells (cham_elem) can be written");
     item.owner = f;
     item.mesh = f->mesh;
     mesh::FieldInstant fi;
@@ -128,7 +157,7 @@ Item resolve(const Keywords& occ, bool textFormat) {
         }
       }
       if (!textFormat)
-        for (const CellField* g : gauss) fi.cellFields.push_back(cellValuesOf(*item.mesh, *g));
+        for (const CellField* g : gauss) fi.cellFields.push_back(cellComponents(*item.mesh, *g, cmps));
       item.instants.push_back(std::move(fi));
       item.cellFields.push_back(std::move(gauss));
     }
@@ -190,7 +219,8 @@ void printNodalField(std::ostream& out, const mesh::Mesh& m, const mesh::NodalFi
 void printGaussField(std::ostream& out, const mesh::Mesh& m, const CellField& g, const std::vector<int>& cells) {
   std::set<int> keep(cells.begin(), cells.end());
   const std::size_t nc = g.components.size();
-  out << " MAILLE   POINT    ";
+  const bool atNodes = g.location == CellLocation::Nodes;  // ELNO: the cell's nodes by name
+  out << (atNodes ? " MAILLE   NOEUD    " : " MAILLE   POINT    ");
   for (const auto& c : g.components) {
     std::string h = " " + c;
     h.resize(std::max<std::size_t>(h.size(), 15), ' ');
@@ -204,7 +234,7 @@ void printGaussField(std::ostream& out, const mesh::Mesh& m, const CellField& g,
     for (int p = 0; p < points; ++p) {
       std::string name = m.cellName(g.cells[k]);
       name.resize(std::max<std::size_t>(name.size(), 8), ' ');
-      std::string point = std::to_string(p + 1);
+      std::string point = atNodes ? m.nodeName(m.cellNodes(g.cells[k])[p]) : std::to_string(p + 1);
       point.resize(std::max<std::size_t>(point.size(), 5), ' ');
       out << " " << name << " " << point << "    ";
       for (std::size_t c = 0; c < nc; ++c) out << " " << number(g.values[begin + p * nc + c]) << "  ";
@@ -235,8 +265,12 @@ std::string textOf(const std::vector<Item>& items, const std::vector<Keywords>& 
         printNodalField(out, *it.mesh, f, it.nodes, vmax, vmin);
       }
       for (const CellField* g : it.cellFields[i]) {
-        out << "\n CHAMP AUX POINTS DE GAUSS " << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
-            << "  INST " << number(fi.time) << "\n";
+        const char* kind = g->location == CellLocation::Nodes ? "AUX NOEUDS DES MAILLES" : "AUX POINTS DE GAUSS";
+        if (it.isResult)
+          out << "\n CHAMP " << kind << " " << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
+              << "  INST " << number(fi.time) << "\n";
+        else
+          out << "\n CHAMP " << kind << " " << name << "\n";
         printGaussField(out, *it.mesh, *g, it.cells);
       }
     }

@@ -220,6 +220,9 @@ CHARGE = AFFE_CHAR_CINE{MODELE=MODELE, MECA_IMPO={{GROUP_MA='GAUCHE', DX=0.0}, {
                                                   {GROUP_MA='HAUT', DY=0.01}}}
 RESU = MECA_STATIQUE{MODELE=MODELE, CHAM_MATER=CHMAT, EXCIT={CHARGE=CHARGE}}
 IMPR_RESU{FORMAT='MED', RESU={RESULTAT=RESU, NOM_CHAM={'DEPL', 'SIEF_ELGA'}}}
+SIG = CREA_CHAMP{TYPE_CHAM='ELGA_SIEF_R', OPERATION='EXTR', RESULTAT=RESU, NOM_CHAM='SIEF_ELGA'}
+IMPR_RESU{FORMAT='MED', RESU={CHAM_GD=SIG, NOM_CMP='SIYY'}}
+IMPR_RESU{FORMAT='GMSH', RESU={RESULTAT=RESU, NOM_CHAM='SIEF_ELGA', NOM_CMP='SIYY'}}
 )");
   ASSERT_EQ(r.status, 0) << r.err << r.out;
   const fs::path med = dir / "out" / "etude.med";
@@ -248,5 +251,22 @@ IMPR_RESU{FORMAT='MED', RESU={RESULTAT=RESU, NOM_CHAM={'DEPL', 'SIEF_ELGA'}}}
     EXPECT_NEAR(v[k + 1], siyy, 1e-6);
     EXPECT_NEAR(v[k + 2], 0.3 * siyy, 1e-6);
     EXPECT_NEAR(v[k + 3], 0, 1e-6);
+  }
+  // The cham_elem SIG, its component SIYY only, under its concept's name.
+  const auto sig = dump.find("CHAMP |SIG|");
+  ASSERT_NE(sig, std::string::npos) << dump;
+  EXPECT_NE(dump.find("Nom des composantes : |SIYY", sig), std::string::npos);
+  // GMSH: the mean over each cell's Gauss points, one scalar per cell.
+  const std::string msh = readFile(dir / "out" / "etude.msh");
+  const std::string header = "$ElementData\n1\n\"SIEF_ELGA_MEAN\"\n1\n0\n3\n0\n1\n2\n";  // 1 component, 2 cells
+  const auto view = msh.find(header);
+  ASSERT_NE(view, std::string::npos) << msh;
+  std::istringstream cells(msh.substr(view + header.size()));
+  for (int cell = 1; cell <= 2; ++cell) {
+    int tag = 0;
+    double mean = 0;
+    cells >> tag >> mean;
+    EXPECT_EQ(tag, cell);
+    EXPECT_NEAR(mean, siyy, 1e-12);
   }
 }
