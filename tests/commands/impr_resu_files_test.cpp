@@ -270,3 +270,26 @@ IMPR_RESU{FORMAT='GMSH', RESU={RESULTAT=RESU, NOM_CHAM='SIEF_ELGA', NOM_CMP='SIY
     EXPECT_NEAR(mean, siyy, 1e-12);
   }
 }
+
+// Two results' SIEF_ELGA written to one MED file by two IMPR_RESU: the second
+// takes the Gauss point localization the file holds (the same points and
+// weights), as code_aster does, rather than a copy of it.
+TEST(OutputFiles, MedTwiceKeepsOneLocalizationPerCellType) {
+  if (std::system("command -v mdump > /dev/null") != 0) GTEST_SKIP() << "mdump (libmed-tools) is not installed";
+  const fs::path dir = freshDir("med_twice_localization");
+  const auto r = run(dir, dir / "out", "DEFI_FICHIER{UNITE=20, FICHIER='" + kMesh + "'}\n" + twoResults("20") + R"(
+IMPR_RESU{FORMAT='MED', RESU={RESULTAT=RESU, NOM_CHAM='SIEF_ELGA'}}
+IMPR_RESU{FORMAT='MED', RESU={RESULTAT=RESU2, NOM_CHAM='SIEF_ELGA'}}
+)");
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  FILE* p = popen(("printf '1\\n1\\n1\\n' | mdump " + (dir / "out" / "etude.med").string() + " 2>&1").c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string dump;
+  char buffer[4096];
+  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, p)) > 0;) dump.append(buffer, n);
+  pclose(p);
+  EXPECT_NE(dump.find("Nombre de localisations stockees : 1\n"), std::string::npos) << dump;
+  EXPECT_NE(dump.find("|QU8_____RIGI| de dimension 2 avec 9 pts de GAUSS"), std::string::npos) << dump;
+  EXPECT_NE(dump.find("CHAMP |RESU____SIEF_ELGA|"), std::string::npos);
+  EXPECT_NE(dump.find("CHAMP |RESU2___SIEF_ELGA|"), std::string::npos);
+}

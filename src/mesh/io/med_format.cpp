@@ -265,23 +265,35 @@ std::string elrefeName(CellType t) {
   }
 }
 
-// The names of the localizations (which = 0) or profiles (which = 1) a file holds.
-std::set<std::string> namesInFile(const MedFile& file, int which) {
+// A Gauss point localization of a file (one aster-lite wrote: a file it adds to).
+struct LocalizationInFile {
+  std::string name;
+  med_geometry_type type;
+  med_int dimension, points;
+};
+
+std::vector<LocalizationInFile> localizationsInFile(const MedFile& file) {
+  std::vector<LocalizationInFile> out;
+  const med_int n = medLibrary().nLocalization(file.id());
+  for (med_int k = 1; k <= n; ++k) {
+    char name[MED_NAME_SIZE + 1] = {}, interp[MED_NAME_SIZE + 1] = {}, section[MED_NAME_SIZE + 1] = {};
+    med_geometry_type gt, sgt;
+    med_int sdim, npt, nsec;
+    file.check(medLibrary().localizationInfo(file.id(), static_cast<int>(k), name, &gt, &sdim, &npt, interp, section,
+                                             &nsec, &sgt),
+               "reading the localizations");
+    out.push_back({fixed(name, MED_NAME_SIZE), gt, sdim, npt});
+  }
+  return out;
+}
+
+std::set<std::string> profileNamesInFile(const MedFile& file) {
   std::set<std::string> names;
-  const med_int n = which == 0 ? medLibrary().nLocalization(file.id()) : medLibrary().nProfile(file.id());
+  const med_int n = medLibrary().nProfile(file.id());
   for (med_int k = 1; k <= n; ++k) {
     char name[MED_NAME_SIZE + 1] = {};
-    if (which == 0) {
-      med_geometry_type gt, sgt;
-      med_int sdim, npt, nsec;
-      char interp[MED_NAME_SIZE + 1] = {}, section[MED_NAME_SIZE + 1] = {};
-      file.check(medLibrary().localizationInfo(file.id(), static_cast<int>(k), name, &gt, &sdim, &npt, interp, section,
-                                               &nsec, &sgt),
-                 "reading the localizations");
-    } else {
-      med_int size = 0;
-      file.check(medLibrary().profileInfo(file.id(), static_cast<int>(k), name, &size), "reading the profiles");
-    }
+    med_int size = 0;
+    file.check(medLibrary().profileInfo(file.id(), static_cast<int>(k), name, &size), "reading the profiles");
     names.insert(fixed(name, MED_NAME_SIZE));
   }
   return names;
@@ -302,8 +314,9 @@ std::string takeName(const std::string& base, std::set<std::string>& used) {
 class CellFieldWriter {
  public:
   CellFieldWriter(const MedFile& file, const Mesh& mesh) : file_(file), mesh_(mesh) {
-    localizationNames_ = namesInFile(file, 0);
-    profileNames_ = namesInFile(file, 1);
+    inFile_ = localizationsInFile(file);
+    for (const auto& l : inFile_) localizationNames_.insert(l.name);
+    profileNames_ = profileNamesInFile(file);
     for (int c = 0; c < mesh.cellCount(); ++c) {
       positionInType_.push_back(typeCount_[mesh.cellType(c)]++);
     }
@@ -354,7 +367,6 @@ class CellFieldWriter {
   std::string localizationOf(const GaussLocalization& l) {
     for (const auto& [known, name] : localizations_)
       if (known->type == l.type && known->points == l.points && known->weights == l.weights) return name;
-    const std::string name = takeName(elrefeName(l.type) + "_____RIGI", localizationNames_);
     // The reference nodes in MED's order.
     const int nodes = nodeCount(l.type);
     std::vector<int> order(nodes);
@@ -363,6 +375,20 @@ class CellFieldWriter {
     std::vector<double> ref;
     for (int j = 0; j < nodes; ++j)
       for (int d = 0; d < l.dimension; ++d) ref.push_back(l.nodes[order[j] * l.dimension + d]);
+    // One the file holds already (an earlier IMPR_RESU to it), the same to the bit: taken again, as code_aster does.
+    const med_int count = static_cast<med_int>(l.weights.size());
+    for (const auto& f : inFile_) {
+      if (f.type != medType(l.type) || f.dimension != l.dimension || f.points != count) continue;
+      std::vector<double> fileRef(ref.size()), filePoints(l.points.size()), fileWeights(l.weights.size());
+      file_.check(medLibrary().localizationRd(file_.id(), f.name.c_str(), MED_FULL_INTERLACE, fileRef.data(),
+                                              filePoints.data(), fileWeights.data()),
+                  "reading the localization " + f.name);
+      if (fileRef == ref && filePoints == l.points && fileWeights == l.weights) {
+        localizations_.emplace_back(&l, f.name);
+        return f.name;
+      }
+    }
+    const std::string name = takeName(elrefeName(l.type) + "_____RIGI", localizationNames_);
     file_.check(medLibrary().localizationWr(file_.id(), name.c_str(), medType(l.type), l.dimension, ref.data(),
                                             MED_FULL_INTERLACE, static_cast<med_int>(l.weights.size()),
                                             l.points.data(), l.weights.data(), MED_NO_INTERPOLATION,
@@ -386,6 +412,7 @@ class CellFieldWriter {
   const Mesh& mesh_;
   std::map<CellType, int> typeCount_;
   std::vector<int> positionInType_;
+  std::vector<LocalizationInFile> inFile_;
   std::set<std::string> localizationNames_, profileNames_;
   std::vector<std::pair<const GaussLocalization*, std::string>> localizations_;
   std::vector<std::pair<std::vector<med_int>, std::string>> profiles_;

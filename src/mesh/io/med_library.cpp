@@ -32,6 +32,7 @@ MedLibrary load() {
   ASTER_MED_RESOLVE(fileClose);
   ASTER_MED_RESOLVE(fileOpen);
   ASTER_MED_RESOLVE(localizationInfo);
+  ASTER_MED_RESOLVE(localizationRd);
   ASTER_MED_RESOLVE(localizationWr);
   ASTER_MED_RESOLVE(meshCr);
   ASTER_MED_RESOLVE(meshElementConnectivityRd);

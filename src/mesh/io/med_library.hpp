@@ -22,6 +22,7 @@ struct MedLibrary {
   decltype(&MEDfileClose) fileClose;
   decltype(&MEDfileOpen) fileOpen;
   decltype(&MEDlocalizationInfo) localizationInfo;
+  decltype(&MEDlocalizationRd) localizationRd;
   decltype(&MEDlocalizationWr) localizationWr;
   decltype(&MEDmeshCr) meshCr;
   decltype(&MEDmeshElementConnectivityRd) meshElementConnectivityRd;
