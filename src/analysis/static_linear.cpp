@@ -18,6 +18,7 @@ StaticLinear::StaticLinear(const MechanicalSystem& system, LinearSettings settin
     : system_(system), settings_(std::move(settings)) {
   solver_ = linalg::makeLinearSolver(settings_.method);
   solver_->setOrdering(settings_.renum);
+  solver_->setFactorizationsPerAnalysis(1);  // one per stiffness, whatever the instants
   solver_->setSingularityDigits(settings_.nprec);
   solver_->setSymmetricByConstruction(system_.symmetricTangent());
 }

@@ -1,6 +1,8 @@
 // IMPR_RESU: writes meshes, nodal fields (cham_no_sdaster) and results
-// (evol_noli: every selected instant's fields) as readable text (RESULTAT), MED,
-// GMSH (.msh 2.2 ASCII) or VTK (.vtu, or a .pvd collection for a result).
+// (evol_noli, evol_elas: every selected instant's nodal and cell fields) as
+// readable text (RESULTAT), MED (a result's fields under code_aster's names,
+// RESU____SIEF_ELGA), GMSH (.msh 2.2 ASCII) or VTK (.vtu, or a .pvd collection
+// for a result); what each format makes of a cell field: docs/manual.md.
 // The file is the one bound to UNITE (DEFI_FICHIER, -u N=path), else
 // <output>/<study>.resu.txt|.med|.msh|.vtu|.pvd. Files are written in a private
 // folder beside the target and renamed into place: an interrupted run or a full
@@ -21,7 +23,10 @@
 #include <string>
 #include <vector>
 
+#include "commands/field_concepts.hpp"
+#include "commands/field_output.hpp"
 #include "commands/function_concepts.hpp"
+#include "commands/instant_selection.hpp"
 #include "commands/mesh_concept.hpp"
 #include "commands/result_concepts.hpp"
 #include "commands/selection.hpp"
@@ -78,46 +83,24 @@ mesh::NodalField keepComponents(const mesh::NodalField& f, const std::vector<std
   return out;
 }
 
-std::vector<const ResultInstant*> selectInstants(const ResultConcept& r, const Keywords& occ) {
-  std::vector<const ResultInstant*> out;
-  if (occ.has("NUME_ORDRE")) {
-    for (long long n : [&] {
-           std::vector<long long> v;
-           for (const auto& x : occ.values("NUME_ORDRE")) v.push_back(x.integer);
-           return v;
-         }()) {
-      const ResultInstant* found = nullptr;
-      std::string list;
-      for (const auto& i : r.instants) {
-        if (i.index == n) found = &i;
-        list += (list.empty() ? "" : ", ") + std::to_string(i.index);
-      }
-      if (!found)
-        throw Error("NUME_ORDRE=" + std::to_string(n) + " is not stored in the result (NUME_ORDRE: " +
-                    (list.empty() ? std::string("none") : list) + ")");
-      out.push_back(found);
-    }
-    return out;
+// A cell field for the writers, with the components NOM_CMP names (all when empty).
+mesh::CellValues cellComponents(const mesh::Mesh& mesh, const CellField& f, const std::vector<std::string>& wanted) {
+  mesh::CellValues v = cellValuesOf(mesh, f);
+  if (wanted.empty()) return v;
+  std::vector<int> index;
+  for (const auto& w : wanted) index.push_back(componentIndex(f.components, w, f.name));
+  const std::size_t nc = f.components.size();
+  std::vector<double> values;
+  std::vector<int> offsets{0};
+  for (std::size_t k = 0; k < f.cells.size(); ++k) {
+    for (int p = 0; p < pointsOf(f, k); ++p)
+      for (int i : index) values.push_back(f.values[static_cast<std::size_t>(f.offsets[k]) + p * nc + i]);
+    offsets.push_back(static_cast<int>(values.size()));
   }
-  std::vector<double> times;
-  if (occ.has("INST")) times = occ.reals("INST");
-  if (occ.has("LIST_INST")) times = occ.concept<RealListConcept>("LIST_INST")->values;
-  if (!occ.has("INST") && !occ.has("LIST_INST")) {
-    for (const auto& i : r.instants) out.push_back(&i);
-    if (out.empty()) throw Error("RESULTAT: the result holds no instant");
-    return out;
-  }
-  const double precision = occ.real("PRECISION");
-  const bool absolute = occ.text("CRITERE") == "ABSOLU";
-  for (double t : times) {
-    const ResultInstant* found = nullptr;
-    if (absolute) {
-      for (const auto& i : r.instants)
-        if (!found && std::fabs(i.time - t) <= precision) found = &i;
-    }
-    out.push_back(found ? found : &r.at(t, precision));
-  }
-  return out;
+  v.components = wanted;
+  v.values = std::move(values);
+  v.offsets = std::move(offsets);
+  return v;
 }
 
 Item resolve(const Keywords& occ, bool textFormat) {
@@ -129,9 +112,17 @@ Item resolve(const Keywords& occ, bool textFormat) {
     given = std::static_pointer_cast<MeshConcept>(item.owner)->mesh;
     item.mesh = given;
   }
-  if (occ.has("CHAM_GD")) {
+  if (occ.has("CHAM_GD") && occ.concept<CellFieldConcept>("CHAM_GD")) {
+    auto g = occ.concept<CellFieldConcept>("CHAM_GD");  // a field on cells, known by its concept's name
+    item.owner = g;
+    item.mesh = g->mesh;
+    mesh::FieldInstant fi;
+    if (!textFormat) fi.cellFields.push_back(cellComponents(*g->mesh, g->field, cmps));
+    item.instants.push_back(std::move(fi));
+    item.cellFields.push_back({&g->field});
+  } else if (occ.has("CHAM_GD")) {
     auto f = occ.concept<NodalFieldConcept>("CHAM_GD");
-    if (!f) throw Error("CHAM_GD: only nodal fields (cham_no_sdaster) can be written");
+    if (!f) throw Error("CHAM_GD: only nodal fields (cham_no_sdaster) and fields on cells (cham_elem) can be written");
     item.owner = f;
     item.mesh = f->mesh;
     mesh::FieldInstant fi;
@@ -145,7 +136,7 @@ Item resolve(const Keywords& occ, bool textFormat) {
     item.isResult = true;
     item.mesh = r->model->meshPtr();
     const std::vector<std::string> names = occ.texts("NOM_CHAM");
-    for (const ResultInstant* ri : selectInstants(*r, occ)) {
+    for (const ResultInstant* ri : selectedInstants(*r, occ)) {
       mesh::FieldInstant fi;
       fi.index = ri->index;
       fi.time = ri->time;
@@ -159,10 +150,6 @@ Item resolve(const Keywords& occ, bool textFormat) {
           for (const auto& x : ri->cells)
             if (x.name == name) g = &x;
           if (g) {
-            if (!textFormat)
-              throw Error("NOM_CHAM='" + name +
-                          "' is a field at Gauss points; aster-lite writes it in FORMAT='RESULTAT' only "
-                          "(MED, GMSH and VTK take nodal fields)");
             gauss.push_back(g);
             continue;
           }
@@ -170,6 +157,8 @@ Item resolve(const Keywords& occ, bool textFormat) {
           fi.fields.push_back(keepComponents(f, cmps, item.mesh->nodeCount(), f.name));
         }
       }
+      if (!textFormat)
+        for (const CellField* g : gauss) fi.cellFields.push_back(cellComponents(*item.mesh, *g, cmps));
       item.instants.push_back(std::move(fi));
       item.cellFields.push_back(std::move(gauss));
       item.resultInstants.push_back(ri);
@@ -232,7 +221,7 @@ void printNodalField(std::ostream& out, const mesh::Mesh& m, const mesh::NodalFi
 void printGaussField(std::ostream& out, const mesh::Mesh& m, const CellField& g, const std::vector<int>& cells) {
   std::set<int> keep(cells.begin(), cells.end());
   const std::size_t nc = g.components.size();
-  const bool atNodes = g.location == CellLocation::Nodes;
+  const bool atNodes = g.location == CellLocation::Nodes;  // ELNO: the cell's nodes by name
   out << (atNodes ? " MAILLE   NOEUD    " : " MAILLE   POINT    ");
   for (const auto& c : g.components) {
     std::string h = " " + c;
@@ -293,9 +282,12 @@ std::string textOf(const std::vector<Item>& items, const std::vector<Keywords>& 
         printNodalField(out, *it.mesh, f, nodes, vmax, vmin);
       }
       for (const CellField* g : it.cellFields[i]) {
-        out << (g->location == CellLocation::Nodes ? "\n CHAMP PAR ELEMENT AUX NOEUDS " : "\n CHAMP AUX POINTS DE GAUSS ")
-            << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
-            << "  INST " << number(fi.time) << "\n";
+        const char* kind = g->location == CellLocation::Nodes ? "PAR ELEMENT AUX NOEUDS" : "AUX POINTS DE GAUSS";
+        if (it.isResult)
+          out << "\n CHAMP " << kind << " " << g->name << " DU RESULTAT " << name << "  NUME_ORDRE " << fi.index
+              << "  INST " << number(fi.time) << "\n";
+        else
+          out << "\n CHAMP " << kind << " " << name << "\n";
         printGaussField(out, *it.mesh, *g, it.cells);
       }
     }
@@ -311,8 +303,15 @@ struct Merged {
   ConceptPtr meshConcept;
   std::vector<mesh::FieldInstant> instants;
   bool hasResult = false;
-  std::map<std::string, std::string> ownerOf;  // field name -> the concept it comes from
 };
+
+// code_aster's name of a result's field in a MED file: the result's name padded
+// to 8 characters with '_', then the field's (RESU____SIEF_ELGA).
+std::string medFieldName(const std::string& result, const std::string& field) {
+  std::string name = result;
+  if (name.size() < 8) name.resize(8, '_');
+  return name + field;
+}
 
 Merged merge(const std::vector<Item>& items, const std::string& format, Session& session) {
   Merged m;
@@ -329,18 +328,26 @@ Merged merge(const std::vector<Item>& items, const std::string& format, Session&
       for (auto& x : m.instants)
         if (x.index == fi.index && x.time == fi.time) into = &x;
       if (!into) {
-        m.instants.push_back({fi.index, fi.time, {}});
+        m.instants.push_back({fi.index, fi.time, {}, {}});
         into = &m.instants.back();
       }
-      for (auto f : fi.fields) {
-        if (!it.isResult) f.name = session.nameOf(*it.owner);  // a CHAM_GD is known by its concept's name
+      const std::string owner = session.nameOf(*it.owner);
+      // A CHAM_GD is known by its concept's name; in MED a result's field by code_aster's name.
+      auto nameOf = [&](const std::string& field) {
+        std::string name = !it.isResult ? owner : format == "MED" ? medFieldName(owner, field) : field;
         for (const auto& other : into->fields)
-          if (other.name == f.name) {
-            f.name = session.nameOf(*it.owner) + "_" + f.name;
-            break;
-          }
-        m.ownerOf[f.name] = session.nameOf(*it.owner);
+          if (other.name == name) return owner + "_" + name;
+        for (const auto& other : into->cellFields)
+          if (other.name == name) return owner + "_" + name;
+        return name;
+      };
+      for (auto f : fi.fields) {
+        f.name = nameOf(f.name);
         into->fields.push_back(std::move(f));
+      }
+      for (auto f : fi.cellFields) {
+        f.name = nameOf(f.name);
+        into->cellFields.push_back(std::move(f));
       }
     }
   }
@@ -372,10 +379,9 @@ std::map<std::string, Written>& writtenFiles() {
 }
 std::string keyOf(const fs::path& p) { return fs::absolute(p).lexically_normal().string(); }
 
-// `name`, else owner_name, else name_2, name_3...: the first not in `used`.
-std::string freeName(const std::string& name, const std::string& owner, const std::set<std::string>& used) {
+// `name`, else name_2, name_3...: the first not in `used`.
+std::string freeName(const std::string& name, const std::set<std::string>& used) {
   if (!used.count(name)) return name;
-  if (!owner.empty() && owner != name && !used.count(owner + "_" + name)) return owner + "_" + name;
   for (int n = 2;; ++n)
     if (!used.count(name + "_" + std::to_string(n))) return name + "_" + std::to_string(n);
 }
@@ -464,19 +470,25 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
     if (!meshPresent) {
       std::set<std::string> used;
       for (const auto& [m, name] : record.meshes) used.insert(name);
-      meshName = freeName(medMeshName(merged, session), "", used);
+      meshName = freeName(medMeshName(merged, session), used);
     }
-    // Field names must be new in the file: <concept>_<field>, else a number.
+    // Field names must be new in the file: else a number (RESU____DEPL_2).
     std::map<std::string, std::string> renamed;
     std::set<std::string> used = record.fields;
-    for (const auto& fi : instants)
-      for (const auto& f : fi.fields)
-        if (!renamed.count(f.name)) {
-          renamed[f.name] = freeName(f.name, merged.ownerOf[f.name], used);
-          used.insert(renamed[f.name]);
-        }
-    for (auto& fi : instants)
+    auto rename = [&](const std::string& name) {
+      if (!renamed.count(name)) {
+        renamed[name] = freeName(name, used);
+        used.insert(renamed[name]);
+      }
+    };
+    for (const auto& fi : instants) {
+      for (const auto& f : fi.fields) rename(f.name);
+      for (const auto& f : fi.cellFields) rename(f.name);
+    }
+    for (auto& fi : instants) {
       for (auto& f : fi.fields) f.name = renamed[f.name];
+      for (auto& f : fi.cellFields) f.name = renamed[f.name];
+    }
   }
 
   try {
@@ -506,9 +518,12 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
         mesh::writePvd(*merged.mesh, p, instants);
       } else {
         std::vector<mesh::NodalField> fields;
-        for (const auto& fi : instants)
+        std::vector<mesh::CellValues> cellFields;
+        for (const auto& fi : instants) {
           for (const auto& f : fi.fields) fields.push_back(f);
-        mesh::writeVtu(*merged.mesh, p, fields);
+          for (const auto& f : fi.cellFields) cellFields.push_back(f);
+        }
+        mesh::writeVtu(*merged.mesh, p, fields, cellFields);
       }
     });
   } catch (...) {
@@ -517,8 +532,10 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
   }
   if (format == "MED") {
     if (!meshPresent) record.meshes.emplace_back(merged.mesh, meshName);
-    for (const auto& fi : instants)
+    for (const auto& fi : instants) {
       for (const auto& f : fi.fields) record.fields.insert(f.name);
+      for (const auto& f : fi.cellFields) record.fields.insert(f.name);
+    }
   }
   if (format == "VTK" && merged.hasResult) removeStaleInstants(session, path);
 
@@ -527,8 +544,10 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
     if (add && format == "MED") {
       how += ": mesh " + meshName + (meshPresent ? " (already there)" : "");
       std::set<std::string> names;
-      for (const auto& fi : instants)
+      for (const auto& fi : instants) {
         for (const auto& f : fi.fields) names.insert(f.name);
+        for (const auto& f : fi.cellFields) names.insert(f.name);
+      }
       if (!names.empty()) {
         how += ", fields";
         for (const auto& n : names) how += " " + n;

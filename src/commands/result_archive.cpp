@@ -2,6 +2,7 @@
 
 #include <cctype>
 
+#include "commands/field_output.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
 
@@ -85,7 +86,10 @@ std::string ResultArchive::storedNote(const std::string& when) const {
 
 void ResultArchive::add(const ResultInstant& instant) {
   const fs::path vtu = pvd_.parent_path() / (pvd_.stem().string() + "_" + std::to_string(instant.index) + ".vtu");
-  writeAtomically(vtu, [&](const fs::path& tmp) { mesh::writeVtu(mesh_, tmp.string(), instant.nodal); }, files_);
+  std::vector<mesh::CellValues> cellFields;
+  for (const auto& c : instant.cells) cellFields.push_back(cellValuesOf(mesh_, c));
+  writeAtomically(vtu, [&](const fs::path& tmp) { mesh::writeVtu(mesh_, tmp.string(), instant.nodal, cellFields); },
+                  files_);
   entries_.push_back({instant.time, vtu.filename().string()});
   try {
     writeAtomically(pvd_, [&](const fs::path& tmp) { mesh::writePvdCollection(tmp.string(), entries_); }, files_);

@@ -1,5 +1,7 @@
 // A result on disk as it is computed: each converged instant of STAT_NON_LINE (and
-// each instant of a MECA_STATIQUE of several) is written at once to <output-dir>/<NAME>_<k>.vtu, then <NAME>.pvd (ParaView's
+// each instant of a MECA_STATIQUE of several) is written at once to
+// <output-dir>/<NAME>_<k>.vtu (its nodal fields as point data, its cell fields as
+// cell data: writeVtu), then <NAME>.pvd (ParaView's
 // collection) is rewritten to list it. Both are renamed into place when
 // complete, so after a fatal error, Ctrl-C or even a kill, the .pvd on disk
 // lists exactly the converged instants and every file it names is whole. A

@@ -35,6 +35,7 @@ struct CholmodSolver::Handles {
 namespace {
 
 constexpr Eigen::Index kNestedDissectionSize = 20000;
+constexpr int kFewFactorizations = 3;
 
 std::string cholmodStatus(int status) {
   switch (status) {
@@ -144,10 +145,13 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
     c.nmethods = savedMethods;
     c.method[0].ordering = savedOrdering;
   } else {
-    // Large matrices: nested dissection (CHOLMOD's NESDIS: METIS node separators, CAMD on
-    // the parts), the fewest flops on meshes of surfaces (SVK square N = 128: 2.52e9 flops
-    // against 2.61e9 with METIS and 2.77e9 with AMD, which CHOLMOD's default keeps). Small
-    // ones keep CHOLMOD's default (AMD), cheaper to compute.
+    // Large matrices factorized many times (Newton): nested dissection (CHOLMOD's NESDIS:
+    // METIS node separators, CAMD on the parts), the fewest flops on meshes of surfaces
+    // (SVK square N = 128: 2.52e9 flops against 2.61e9 with METIS and 2.77e9 with AMD,
+    // which CHOLMOD's default keeps). Small ones, and a matrix factorized only a few
+    // times, take AMD: computing the nested dissection costs more than the flops it saves
+    // (plate with a hole, 1.6 M unknowns, one factorization: NESDIS 8 s of ordering for
+    // 1.67e11 flops; AMD 2.06e11 flops, 5 s less in all).
     const int savedMethods = c.nmethods;
     const int savedOrdering = c.method[0].ordering;
     const int savedPostorder = c.postorder;
@@ -156,11 +160,14 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
       c.nmethods = 1;
       c.method[0].ordering = ordering_ == "AMD" ? CHOLMOD_AMD : ordering_ == "METIS" ? CHOLMOD_METIS : CHOLMOD_NATURAL;
       if (ordering_ == "SANS") c.postorder = 0;
-    } else if (M.rows() >= kNestedDissectionSize) {
+    } else if (M.rows() >= kNestedDissectionSize && factorizationsPerAnalysis_ > kFewFactorizations) {
       c.nmethods = 1;
       c.method[0].ordering = CHOLMOD_NESDIS;
       nodeOrder = nodeNestedDissection(M, c);
       if (!nodeOrder.empty()) c.method[0].ordering = CHOLMOD_GIVEN;
+    } else if (M.rows() >= kNestedDissectionSize) {
+      c.nmethods = 1;  // AMD alone: CHOLMOD's default would try METIS as well on such a matrix
+      c.method[0].ordering = CHOLMOD_AMD;
     }
     h_->factor = nodeOrder.empty() ? cholmod_analyze(&view, &c) : cholmod_analyze_p(&view, nodeOrder.data(), nullptr, 0, &c);
     if (!h_->factor && c.status == CHOLMOD_NOT_INSTALLED) {  // CHOLMOD built without METIS

@@ -1,6 +1,6 @@
 // CHOLMOD for symmetric matrices (only the upper triangle is read, after a symmetry check).
 // Mode::Cholesky: supernodal LL^T (BLAS/LAPACK on dense blocks), ordering chosen by CHOLMOD
-//   (AMD, or nested dissection on large matrices); the matrix must be positive definite.
+//   (AMD, or nested dissection on large matrices factorized many times); the matrix must be positive definite.
 //   CHOLMOD computes the ordering, the supernodes and the solves; the numeric factorization
 //   is aster-lite's multifrontal one (multifrontal_cholesky.hpp), several times faster
 //   than CHOLMOD's left-looking one on 2D meshes.
@@ -37,7 +37,7 @@ class CholmodSolver : public LinearSolver {
     return mode_ == Mode::Cholesky ? "CHOLMOD" : mode_ == Mode::LDLT ? "CHOLMOD_LDLT" : "MULT_FRONT";
   }
   Mode mode() const { return mode_; }
-  // RENUM: AUTO (AMD; nested dissection on large matrices), AMD, METIS, SANS (natural).
+  // RENUM: AUTO (AMD; nested dissection on large matrices factorized many times), AMD, METIS, SANS (natural).
   // CHOLMOD_LDLT and MULT_FRONT with constraint rows always order them last (constrained AMD).
   std::vector<std::string> orderings() const override { return {"AUTO", "AMD", "METIS", "SANS"}; }
 

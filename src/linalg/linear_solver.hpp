@@ -65,6 +65,11 @@ class LinearSolver {
   const std::string& ordering() const { return ordering_; }
   virtual std::vector<std::string> orderings() const { return {"AUTO"}; }
 
+  // How many factorizations the caller expects per analysis: many in a Newton loop
+  // (the default), one for a linear solve. RENUM='AUTO' weighs the cost of computing
+  // an ordering against the flops it saves over all of them.
+  void setFactorizationsPerAnalysis(int n) { factorizationsPerAnalysis_ = n; }
+
   // Unknowns first, first + 1, ... are Lagrange multipliers (contact): the factorizations
   // without pivoting order them after the others, whatever their diagonal. -1: none.
   void setMultipliersFrom(int first) { multipliersFrom_ = first; }
@@ -83,6 +88,7 @@ class LinearSolver {
   std::string ordering_ = "AUTO";
   int multipliersFrom_ = -1;
   bool symmetricByConstruction_ = false;
+  int factorizationsPerAnalysis_ = 1000;
   SparsityPattern pattern_;  // what analyze() saw, to refuse another pattern in factorize()
 };
 

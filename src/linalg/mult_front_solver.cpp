@@ -22,6 +22,7 @@ void MultFrontSolver::analyze(const SparseMatrix& A) {
     multFront_->setSingularityDigits(nprec_);
     multFront_->setMultipliersFrom(multipliersFrom_);
     multFront_->setSymmetricByConstruction(symmetricByConstruction_);
+    multFront_->setFactorizationsPerAnalysis(factorizationsPerAnalysis_);
     multFront_->analyze(A);
   }
   gatherStatistics();

@@ -5,6 +5,8 @@
 // written over, even with the output folder set to the study's own folder.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -79,11 +81,12 @@ IMPR_RESU{FORMAT='MED', RESU={CHAM_GD=GEOM2}}
   // The QUAD8 cut in 4 has 21 nodes (5 x 5 less the 4 cell centres), MAITRE's SEG3 its 3.
   EXPECT_EQ(mesh::readMedMesh(med.string(), "MAIL_2").nodeCount(), 24);
   EXPECT_NE(r.out.find("written to " + med.string() + " (added to the file of an earlier IMPR_RESU of this run: mesh "
-                       "MAIL (already there), fields RESU2_DEPL)"),
+                       "MAIL (already there), fields RESU2___DEPL)"),
             std::string::npos)
       << r.out;
-  const auto first = mesh::readMedNodalField(med.string(), "DEPL", 1);
-  const auto second = mesh::readMedNodalField(med.string(), "RESU2_DEPL", 1);
+  // code_aster's names: the result's name padded to 8 characters with '_', then the field's.
+  const auto first = mesh::readMedNodalField(med.string(), "RESU____DEPL", 1);
+  const auto second = mesh::readMedNodalField(med.string(), "RESU2___DEPL", 1);
   ASSERT_EQ(first.values.size(), second.values.size());
   double largest = 0;
   for (std::size_t i = 0; i < first.values.size(); ++i) {
@@ -198,4 +201,95 @@ IMPR_FONCTION{FORMAT='SVG', UNITE=29, COURBE={ABSCISSE={0, 1}, ORDONNEE={0, 2}}}
   EXPECT_EQ(readFile(dir / "out" / "courbe-2_1.dat"), "0 0\n1 2\n");
   EXPECT_GT(fs::file_size(dir / "out" / "courbe.svg"), 100u);
   EXPECT_GT(fs::file_size(dir / "out" / "courbe-2.svg"), 100u);
+}
+
+// A uniform plane strain state (GAUCHE: DX = 0, BAS: DY = 0, HAUT: DY = 0.01 on
+// the 2 x 1 rectangle, E = 100, NU = 0.3): SIYY = E eps / (1 - NU^2), SIZZ = NU
+// SIYY, SIXX = SIXY = 0 at every Gauss point. IMPR_RESU in MED writes it under
+// code_aster's name RESU____SIEF_ELGA, read back with mdump.
+TEST(OutputFiles, MedWritesTheStressAtGaussPointsUnderCodeAstersName) {
+  if (std::system("command -v mdump > /dev/null") != 0) GTEST_SKIP() << "mdump (libmed-tools) is not installed";
+  const fs::path dir = freshDir("med_sief_elga");
+  const std::string mesh = std::string(ASTER_SOURCE_DIR) + "/tests/bad_input/base.mail";
+  const auto r = run(dir, dir / "out", "DEFI_FICHIER{UNITE=20, FICHIER='" + mesh + R"('}
+MAIL = LIRE_MAILLAGE{FORMAT='ASTER', UNITE=20}
+MODELE = AFFE_MODELE{MAILLAGE=MAIL, AFFE={TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'}}
+MAT = DEFI_MATERIAU{ELAS={E=100.0, NU=0.3}}
+CHMAT = AFFE_MATERIAU{MAILLAGE=MAIL, AFFE={TOUT='OUI', MATER=MAT}}
+CHARGE = AFFE_CHAR_CINE{MODELE=MODELE, MECA_IMPO={{GROUP_MA='GAUCHE', DX=0.0}, {GROUP_MA='BAS', DY=0.0},
+                                                  {GROUP_MA='HAUT', DY=0.01}}}
+RESU = MECA_STATIQUE{MODELE=MODELE, CHAM_MATER=CHMAT, EXCIT={CHARGE=CHARGE}}
+IMPR_RESU{FORMAT='MED', RESU={RESULTAT=RESU, NOM_CHAM={'DEPL', 'SIEF_ELGA'}}}
+SIG = CREA_CHAMP{TYPE_CHAM='ELGA_SIEF_R', OPERATION='EXTR', RESULTAT=RESU, NOM_CHAM='SIEF_ELGA'}
+IMPR_RESU{FORMAT='MED', RESU={CHAM_GD=SIG, NOM_CMP='SIYY'}}
+IMPR_RESU{FORMAT='GMSH', RESU={RESULTAT=RESU, NOM_CHAM='SIEF_ELGA', NOM_CMP='SIYY'}}
+)");
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  const fs::path med = dir / "out" / "etude.med";
+  FILE* p = popen(("printf '1\\n1\\n1\\n' | mdump " + med.string() + " 2>&1").c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string dump;
+  char buffer[4096];
+  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, p)) > 0;) dump.append(buffer, n);
+  pclose(p);
+  EXPECT_NE(dump.find("CHAMP |RESU____DEPL|"), std::string::npos) << dump;
+  const auto at = dump.find("CHAMP |RESU____SIEF_ELGA|");
+  ASSERT_NE(at, std::string::npos) << dump;
+  EXPECT_NE(dump.find("|QU4_____RIGI| de dimension 2 avec 4 pts de GAUSS"), std::string::npos) << dump;
+  const auto values = dump.find("- Valeurs :", at);
+  ASSERT_NE(values, std::string::npos);
+  std::string line = dump.substr(values + 12, dump.find('\n', values + 13) - values - 12);
+  for (char& c : line)
+    if (c == '|') c = ' ';
+  std::istringstream in(line);
+  std::vector<double> v;
+  for (double x; in >> x;) v.push_back(x);
+  ASSERT_EQ(v.size(), 2u * 4 * 4);  // 2 QUAD4, 4 points, SIXX SIYY SIZZ SIXY
+  const double siyy = 100 * 0.01 / (1 - 0.3 * 0.3);
+  for (std::size_t k = 0; k < v.size(); k += 4) {
+    EXPECT_NEAR(v[k], 0, 1e-6);
+    EXPECT_NEAR(v[k + 1], siyy, 1e-6);
+    EXPECT_NEAR(v[k + 2], 0.3 * siyy, 1e-6);
+    EXPECT_NEAR(v[k + 3], 0, 1e-6);
+  }
+  // The cham_elem SIG, its component SIYY only, under its concept's name.
+  const auto sig = dump.find("CHAMP |SIG|");
+  ASSERT_NE(sig, std::string::npos) << dump;
+  EXPECT_NE(dump.find("Nom des composantes : |SIYY", sig), std::string::npos);
+  // GMSH: the mean over each cell's Gauss points, one scalar per cell.
+  const std::string msh = readFile(dir / "out" / "etude.msh");
+  const std::string header = "$ElementData\n1\n\"SIEF_ELGA_MEAN\"\n1\n0\n3\n0\n1\n2\n";  // 1 component, 2 cells
+  const auto view = msh.find(header);
+  ASSERT_NE(view, std::string::npos) << msh;
+  std::istringstream cells(msh.substr(view + header.size()));
+  for (int cell = 1; cell <= 2; ++cell) {
+    int tag = 0;
+    double mean = 0;
+    cells >> tag >> mean;
+    EXPECT_EQ(tag, cell);
+    EXPECT_NEAR(mean, siyy, 1e-12);
+  }
+}
+
+// Two results' SIEF_ELGA written to one MED file by two IMPR_RESU: the second
+// takes the Gauss point localization the file holds (the same points and
+// weights), as code_aster does, rather than a copy of it.
+TEST(OutputFiles, MedTwiceKeepsOneLocalizationPerCellType) {
+  if (std::system("command -v mdump > /dev/null") != 0) GTEST_SKIP() << "mdump (libmed-tools) is not installed";
+  const fs::path dir = freshDir("med_twice_localization");
+  const auto r = run(dir, dir / "out", "DEFI_FICHIER{UNITE=20, FICHIER='" + kMesh + "'}\n" + twoResults("20") + R"(
+IMPR_RESU{FORMAT='MED', RESU={RESULTAT=RESU, NOM_CHAM='SIEF_ELGA'}}
+IMPR_RESU{FORMAT='MED', RESU={RESULTAT=RESU2, NOM_CHAM='SIEF_ELGA'}}
+)");
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  FILE* p = popen(("printf '1\\n1\\n1\\n' | mdump " + (dir / "out" / "etude.med").string() + " 2>&1").c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string dump;
+  char buffer[4096];
+  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, p)) > 0;) dump.append(buffer, n);
+  pclose(p);
+  EXPECT_NE(dump.find("Nombre de localisations stockees : 1\n"), std::string::npos) << dump;
+  EXPECT_NE(dump.find("|QU8_____RIGI| de dimension 2 avec 9 pts de GAUSS"), std::string::npos) << dump;
+  EXPECT_NE(dump.find("CHAMP |RESU____SIEF_ELGA|"), std::string::npos);
+  EXPECT_NE(dump.find("CHAMP |RESU2___SIEF_ELGA|"), std::string::npos);
 }

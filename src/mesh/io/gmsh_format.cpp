@@ -435,6 +435,12 @@ void writeGmshResults(const Mesh& mesh, const std::string& path, const std::vect
         throw Error("gmsh writer: field '" + f.name + "' has " + std::to_string(f.values.size()) +
                     " values, expected " + std::to_string(mesh.nodeCount()) + " nodes x " +
                     std::to_string(f.components.size()) + " components");
+  for (const auto& inst : instants)
+    for (const auto& f : inst.cellFields) {
+      checkCellValues(mesh, f, "gmsh writer");
+      if (options.version != 2.2 || options.binary)
+        throw Error("gmsh writer: the cell field '" + f.name + "' is written in MSH 2.2 ASCII only");
+    }
   if (options.version == 2.2 && !options.binary) return writeMsh2(mesh, path, instants);  // no libgmsh
   GmshSession session;
   try {

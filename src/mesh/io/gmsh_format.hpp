@@ -67,6 +67,7 @@ void writeGmshMesh(const Mesh& mesh, const std::string& path, const GmshWriteOpt
 // Version 2.2 ASCII is written by aster-lite itself, without libgmsh (msh2_writer.hpp).
 // Fields of 2 components are padded to 3 (gmsh vectors); other counts than
 // 1, 2, 3 or 9 are written as one scalar view per component ("SIEF_SIXX").
+// Cell fields (ElementData, ElementNodeData views) in version 2.2 ASCII only.
 void writeGmshResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
                       const GmshWriteOptions& options = {});
 

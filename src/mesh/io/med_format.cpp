@@ -247,6 +247,194 @@ void writeFields(const MedFile& file, const Mesh& mesh, const std::vector<FieldI
     }
 }
 
+// code_aster's name of the reference element (elrefe) of a cell type, which
+// begins the name of its Gauss point localizations.
+std::string elrefeName(CellType t) {
+  switch (t) {
+    case CellType::POI1: return "PO1";
+    case CellType::SEG2: return "SE2";
+    case CellType::SEG3: return "SE3";
+    case CellType::SEG4: return "SE4";
+    case CellType::TRIA3: return "TR3";
+    case CellType::TRIA6: return "TR6";
+    case CellType::TRIA7: return "TR7";
+    case CellType::QUAD4: return "QU4";
+    case CellType::QUAD8: return "QU8";
+    case CellType::QUAD9: return "QU9";
+    default: return cellTypeName(t);
+  }
+}
+
+// A Gauss point localization of a file (one aster-lite wrote: a file it adds to).
+struct LocalizationInFile {
+  std::string name;
+  med_geometry_type type;
+  med_int dimension, points;
+};
+
+std::vector<LocalizationInFile> localizationsInFile(const MedFile& file) {
+  std::vector<LocalizationInFile> out;
+  const med_int n = medLibrary().nLocalization(file.id());
+  for (med_int k = 1; k <= n; ++k) {
+    char name[MED_NAME_SIZE + 1] = {}, interp[MED_NAME_SIZE + 1] = {}, section[MED_NAME_SIZE + 1] = {};
+    med_geometry_type gt, sgt;
+    med_int sdim, npt, nsec;
+    file.check(medLibrary().localizationInfo(file.id(), static_cast<int>(k), name, &gt, &sdim, &npt, interp, section,
+                                             &nsec, &sgt),
+               "reading the localizations");
+    out.push_back({fixed(name, MED_NAME_SIZE), gt, sdim, npt});
+  }
+  return out;
+}
+
+std::set<std::string> profileNamesInFile(const MedFile& file) {
+  std::set<std::string> names;
+  const med_int n = medLibrary().nProfile(file.id());
+  for (med_int k = 1; k <= n; ++k) {
+    char name[MED_NAME_SIZE + 1] = {};
+    med_int size = 0;
+    file.check(medLibrary().profileInfo(file.id(), static_cast<int>(k), name, &size), "reading the profiles");
+    names.insert(fixed(name, MED_NAME_SIZE));
+  }
+  return names;
+}
+
+// `base`, else base_2, base_3...: the first not in `used`, which takes it.
+std::string takeName(const std::string& base, std::set<std::string>& used) {
+  std::string name = base;
+  for (int n = 2; used.count(name); ++n) name = base + "_" + std::to_string(n);
+  used.insert(name);
+  return name;
+}
+
+// Cell fields as code_aster writes them: at Gauss points (ELGA) on MED_CELL
+// with a localization per cell type named after code_aster's (<elrefe>_____RIGI,
+// "QU4_____RIGI"), at cell nodes (ELNO) on MED_NODE_ELEMENT, values in MED's
+// node order; a profile when the field lies on some of the cells of a type.
+class CellFieldWriter {
+ public:
+  CellFieldWriter(const MedFile& file, const Mesh& mesh) : file_(file), mesh_(mesh) {
+    inFile_ = localizationsInFile(file);
+    for (const auto& l : inFile_) localizationNames_.insert(l.name);
+    profileNames_ = profileNamesInFile(file);
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+      positionInType_.push_back(typeCount_[mesh.cellType(c)]++);
+    }
+  }
+
+  void write(const CellValues& f, const FieldInstant& inst) {
+    checkCellValues(mesh_, f, "MED writer");
+    const std::size_t nc = f.components.size();
+    // Cells by type, in the order the mesh numbers them within the type.
+    std::map<CellType, std::vector<std::size_t>> byType;
+    for (std::size_t k = 0; k < f.cells.size(); ++k) byType[mesh_.cellType(f.cells[k])].push_back(k);
+    for (auto& [type, ks] : byType) {
+      std::sort(ks.begin(), ks.end(), [&](std::size_t a, std::size_t b) { return f.cells[a] < f.cells[b]; });
+      std::string localization = MED_NO_LOCALIZATION;
+      const int nodes = nodeCount(type);
+      std::vector<int> order(nodes);  // MED position j holds the aster point order[j] (ELNO)
+      for (int j = 0; j < nodes; ++j) order[j] = j;
+      if (f.atNodes) {
+        order = fromAsterOrder(NodeConvention::Med, type, order);
+      } else {
+        for (const auto& l : f.localizations)
+          if (l.type == type) localization = localizationOf(l);
+      }
+      std::vector<double> values;
+      std::vector<med_int> profile;
+      for (std::size_t k : ks) {
+        const int begin = f.offsets[k];
+        const int points = (f.offsets[k + 1] - begin) / static_cast<int>(nc);
+        for (int p = 0; p < points; ++p) {
+          const int from = f.atNodes ? order[p] : p;
+          for (std::size_t c = 0; c < nc; ++c) values.push_back(f.values[begin + from * nc + c]);
+        }
+        profile.push_back(positionInType_[f.cells[k]] + 1);
+      }
+      std::string profileName = MED_NO_PROFILE;
+      if (static_cast<int>(ks.size()) != typeCount_[type]) profileName = profileOf(f.name, type, profile);
+      file_.check(medLibrary().fieldValueWithProfileWr(
+                      file_.id(), f.name.c_str(), inst.index, MED_NO_IT, inst.time,
+                      f.atNodes ? MED_NODE_ELEMENT : MED_CELL, medType(type), MED_COMPACT_STMODE, profileName.c_str(),
+                      localization.c_str(), MED_FULL_INTERLACE, MED_ALL_CONSTITUENT,
+                      static_cast<med_int>(ks.size()), reinterpret_cast<const unsigned char*>(values.data())),
+                  "writing field " + f.name + " on the " + cellTypeName(type) + " cells at step " +
+                      std::to_string(inst.index));
+    }
+  }
+
+ private:
+  std::string localizationOf(const GaussLocalization& l) {
+    for (const auto& [known, name] : localizations_)
+      if (known->type == l.type && known->points == l.points && known->weights == l.weights) return name;
+    // The reference nodes in MED's order.
+    const int nodes = nodeCount(l.type);
+    std::vector<int> order(nodes);
+    for (int j = 0; j < nodes; ++j) order[j] = j;
+    order = fromAsterOrder(NodeConvention::Med, l.type, order);
+    std::vector<double> ref;
+    for (int j = 0; j < nodes; ++j)
+      for (int d = 0; d < l.dimension; ++d) ref.push_back(l.nodes[order[j] * l.dimension + d]);
+    // One the file holds already (an earlier IMPR_RESU to it), the same to the bit: taken again, as code_aster does.
+    const med_int count = static_cast<med_int>(l.weights.size());
+    for (const auto& f : inFile_) {
+      if (f.type != medType(l.type) || f.dimension != l.dimension || f.points != count) continue;
+      std::vector<double> fileRef(ref.size()), filePoints(l.points.size()), fileWeights(l.weights.size());
+      file_.check(medLibrary().localizationRd(file_.id(), f.name.c_str(), MED_FULL_INTERLACE, fileRef.data(),
+                                              filePoints.data(), fileWeights.data()),
+                  "reading the localization " + f.name);
+      if (fileRef == ref && filePoints == l.points && fileWeights == l.weights) {
+        localizations_.emplace_back(&l, f.name);
+        return f.name;
+      }
+    }
+    const std::string name = takeName(elrefeName(l.type) + "_____RIGI", localizationNames_);
+    file_.check(medLibrary().localizationWr(file_.id(), name.c_str(), medType(l.type), l.dimension, ref.data(),
+                                            MED_FULL_INTERLACE, static_cast<med_int>(l.weights.size()),
+                                            l.points.data(), l.weights.data(), MED_NO_INTERPOLATION,
+                                            MED_NO_MESH_SUPPORT),
+                "writing the Gauss point localization " + name);
+    localizations_.emplace_back(&l, name);
+    return name;
+  }
+
+  std::string profileOf(const std::string& field, CellType type, const std::vector<med_int>& cells) {
+    for (const auto& [known, name] : profiles_)
+      if (known == cells) return name;
+    const std::string name = takeName((field + "_" + cellTypeName(type)).substr(0, MED_NAME_SIZE - 4), profileNames_);
+    file_.check(medLibrary().profileWr(file_.id(), name.c_str(), static_cast<med_int>(cells.size()), cells.data()),
+                "writing the profile " + name);
+    profiles_.emplace_back(cells, name);
+    return name;
+  }
+
+  const MedFile& file_;
+  const Mesh& mesh_;
+  std::map<CellType, int> typeCount_;
+  std::vector<int> positionInType_;
+  std::vector<LocalizationInFile> inFile_;
+  std::set<std::string> localizationNames_, profileNames_;
+  std::vector<std::pair<const GaussLocalization*, std::string>> localizations_;
+  std::vector<std::pair<std::vector<med_int>, std::string>> profiles_;
+};
+
+void writeCellFields(const MedFile& file, const Mesh& mesh, const std::vector<FieldInstant>& instants,
+                     const std::string& meshName) {
+  CellFieldWriter writer(file, mesh);
+  std::set<std::string> created;
+  for (const auto& inst : instants)
+    for (const auto& f : inst.cellFields) {
+      const med_int nc = static_cast<med_int>(f.components.size());
+      if (f.name.size() > MED_NAME_SIZE) throw Error("MED writer: field name '" + f.name + "' is too long");
+      if (created.insert(f.name).second)
+        file.check(medLibrary().fieldCr(file.id(), f.name.c_str(), MED_FLOAT64, nc,
+                                        padded(f.components, MED_SNAME_SIZE).c_str(),
+                                        std::string(nc * MED_SNAME_SIZE, ' ').c_str(), "", meshName.c_str()),
+                   "creating field " + f.name);
+      writer.write(f, inst);
+    }
+}
+
 }  // namespace
 
 void writeMedMesh(const Mesh& mesh, const std::string& path, const std::string& meshName) {
@@ -266,6 +454,7 @@ void writeMedFile(const Mesh& mesh, const std::string& path, const std::vector<F
     MedFile file(path, add ? MED_ACC_RDWR : MED_ACC_CREAT);
     if (!meshPresent) writeMesh(file, mesh, meshName);
     writeFields(file, mesh, instants, meshName);
+    writeCellFields(file, mesh, instants, meshName);
     file.close();
   } catch (const Error& e) {
     const int why = errno;

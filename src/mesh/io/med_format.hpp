@@ -1,5 +1,6 @@
 // MED files (libmedc 4.1): unstructured meshes with families turned into groups
-// (cell families -> GROUP_MA, node families -> GROUP_NO) and nodal result fields.
+// (cell families -> GROUP_MA, node families -> GROUP_NO) and result fields:
+// nodal, at Gauss points, at cell nodes.
 // Connectivities are converted with code_aster's MED <-> code_aster node tables.
 #pragma once
 #include <functional>
@@ -28,7 +29,11 @@ Mesh readMedMesh(const std::string& path, const std::string& meshName = "");
 // Writes the mesh (and groups, names when they fit in 16 characters) to a new file.
 void writeMedMesh(const Mesh& mesh, const std::string& path, const std::string& meshName = "MAIL");
 
-// The mesh followed by nodal fields, one MED time step per instant (numdt = index, dt = time).
+// The mesh followed by the fields, one MED time step per instant (numdt = index, dt =
+// time): nodal fields on MED_NODE; cell fields as code_aster writes them, at Gauss
+// points on MED_CELL with a localization per cell type (<elrefe>_____RIGI:
+// QU4_____RIGI), at cell nodes on MED_NODE_ELEMENT, with a profile
+// (<field>_<TYPE>) when they cover some of the cells of a type.
 void writeMedResults(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants,
                      const std::string& meshName = "MAIL");
 

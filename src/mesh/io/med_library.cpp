@@ -26,10 +26,14 @@ MedLibrary load() {
   ASTER_MED_RESOLVE(fieldInfoByName);
   ASTER_MED_RESOLVE(fieldValueRd);
   ASTER_MED_RESOLVE(fieldValueWr);
+  ASTER_MED_RESOLVE(fieldValueWithProfileWr);
   ASTER_MED_RESOLVE(fieldnComponentByName);
   ASTER_MED_RESOLVE(fieldnValue);
   ASTER_MED_RESOLVE(fileClose);
   ASTER_MED_RESOLVE(fileOpen);
+  ASTER_MED_RESOLVE(localizationInfo);
+  ASTER_MED_RESOLVE(localizationRd);
+  ASTER_MED_RESOLVE(localizationWr);
   ASTER_MED_RESOLVE(meshCr);
   ASTER_MED_RESOLVE(meshElementConnectivityRd);
   ASTER_MED_RESOLVE(meshElementConnectivityWr);
@@ -45,7 +49,11 @@ MedLibrary load() {
   ASTER_MED_RESOLVE(meshnEntity);
   ASTER_MED_RESOLVE(nFamily);
   ASTER_MED_RESOLVE(nFamilyGroup);
+  ASTER_MED_RESOLVE(nLocalization);
   ASTER_MED_RESOLVE(nMesh);
+  ASTER_MED_RESOLVE(nProfile);
+  ASTER_MED_RESOLVE(profileInfo);
+  ASTER_MED_RESOLVE(profileWr);
 #undef ASTER_MED_RESOLVE
   // No HDF5 clean-up at exit: aster-lite closes every MED file it opens, and after a
   // close that failed (full disk) HDF5's clean-up crashes on the file it kept.

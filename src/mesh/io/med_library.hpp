@@ -16,10 +16,14 @@ struct MedLibrary {
   decltype(&MEDfieldInfoByName) fieldInfoByName;
   decltype(&MEDfieldValueRd) fieldValueRd;
   decltype(&MEDfieldValueWr) fieldValueWr;
+  decltype(&MEDfieldValueWithProfileWr) fieldValueWithProfileWr;
   decltype(&MEDfieldnComponentByName) fieldnComponentByName;
   decltype(&MEDfieldnValue) fieldnValue;
   decltype(&MEDfileClose) fileClose;
   decltype(&MEDfileOpen) fileOpen;
+  decltype(&MEDlocalizationInfo) localizationInfo;
+  decltype(&MEDlocalizationRd) localizationRd;
+  decltype(&MEDlocalizationWr) localizationWr;
   decltype(&MEDmeshCr) meshCr;
   decltype(&MEDmeshElementConnectivityRd) meshElementConnectivityRd;
   decltype(&MEDmeshElementConnectivityWr) meshElementConnectivityWr;
@@ -35,7 +39,11 @@ struct MedLibrary {
   decltype(&MEDmeshnEntity) meshnEntity;
   decltype(&MEDnFamily) nFamily;
   decltype(&MEDnFamilyGroup) nFamilyGroup;
+  decltype(&MEDnLocalization) nLocalization;
   decltype(&MEDnMesh) nMesh;
+  decltype(&MEDnProfile) nProfile;
+  decltype(&MEDprofileInfo) profileInfo;
+  decltype(&MEDprofileWr) profileWr;
 };
 
 // Loads the library on the first call. Throws aster::Error, naming the library and the

@@ -36,6 +36,35 @@ std::vector<View> viewsOf(const NodalField& f) {
   return views;
 }
 
+// One $ElementData (Gauss point field: the mean per cell) or $ElementNodeData
+// (field at cell nodes) view: widths as nodal views.
+struct CellView {
+  std::string name;
+  int width;
+  const CellValues* field;
+  int component;  // as View::component
+  double value(std::size_t k, int point, int c) const {
+    const std::size_t nc = field->components.size();
+    const std::size_t at = static_cast<std::size_t>(field->offsets[k]) + static_cast<std::size_t>(point) * nc;
+    if (component >= 0) return field->values[at + component];
+    return c < static_cast<int>(nc) ? field->values[at + c] : 0.0;
+  }
+  double mean(std::size_t k, int c) const {
+    if (component >= 0) return pointMean(*field, k, component);
+    return c < static_cast<int>(field->components.size()) ? pointMean(*field, k, c) : 0.0;
+  }
+};
+
+std::vector<CellView> viewsOf(const CellValues& f) {
+  const std::string name = f.atNodes ? f.name : f.name + "_MEAN";
+  const int nc = static_cast<int>(f.components.size());
+  if (nc == 1 || nc == 3 || nc == 9) return {{name, nc, &f, -1}};
+  if (nc == 2) return {{name, 3, &f, -1}};
+  std::vector<CellView> views;
+  for (int c = 0; c < nc; ++c) views.push_back({name + "_" + f.components[c], 1, &f, c});
+  return views;
+}
+
 }  // namespace
 
 void writeMsh2(const Mesh& mesh, const std::string& path, const std::vector<FieldInstant>& instants) {
@@ -116,6 +145,38 @@ void writeMsh2(const Mesh& mesh, const std::string& path, const std::vector<Fiel
         out.put('\n');
       }
       out.printf("$EndNodeData\n");
+    }
+
+  // Cell fields: at Gauss points the mean per cell ($ElementData), at cell nodes
+  // the values at each node in gmsh's node order ($ElementNodeData). A cell is
+  // element c + 1, its first copy.
+  std::map<std::string, std::vector<std::pair<int, CellView>>> cellSteps;
+  for (std::size_t s = 0; s < instants.size(); ++s)
+    for (const auto& f : instants[s].cellFields)
+      for (const CellView& v : viewsOf(f)) cellSteps[v.name].emplace_back(static_cast<int>(s), v);
+  for (const auto& [name, blocks] : cellSteps)
+    for (const auto& [step, view] : blocks) {
+      const CellValues& f = *view.field;
+      const char* section = f.atNodes ? "ElementNodeData" : "ElementData";
+      out.printf("$%s\n1\n\"%s\"\n1\n%.17g\n3\n%d\n%d\n%zu\n", section, name.c_str(), instants[step].time, step,
+                 view.width, f.cells.size());
+      for (std::size_t k = 0; k < f.cells.size(); ++k) {
+        const int c = f.cells[k];
+        out.printf("%d", c + 1);
+        if (f.atNodes) {
+          const CellType t = mesh.cellType(c);
+          std::vector<int> order(nodeCount(t));
+          for (std::size_t j = 0; j < order.size(); ++j) order[j] = static_cast<int>(j);
+          order = fromAsterOrder(NodeConvention::Gmsh, t, order);
+          out.printf(" %zu", order.size());
+          for (int p : order)
+            for (int i = 0; i < view.width; ++i) out.printf(" %.17g", view.value(k, p, i));
+        } else {
+          for (int i = 0; i < view.width; ++i) out.printf(" %.17g", view.mean(k, i));
+        }
+        out.put('\n');
+      }
+      out.printf("$End%s\n", section);
     }
   out.close();
 }

@@ -15,6 +15,10 @@
 //  - the mesh once, then each field as a $NodeData view, one block per instant (gmsh
 //    writes the mesh again before its views, and an $InterpolationScheme that only its
 //    own adaptive views use);
+//  - cell fields after the nodal ones: at Gauss points as $ElementData, the mean of
+//    the cell's points per cell, named <field>_MEAN (SIEF_ELGA_MEAN); at cell nodes
+//    as $ElementNodeData (SIGM_ELNO), in gmsh's node order; split into scalar
+//    views as nodal fields (SIEF_ELGA_MEAN_SIXX);
 //  - numbers with 17 significant digits (gmsh: 16), so that a round trip is exact.
 #pragma once
 #include <string>

@@ -1,6 +1,10 @@
 #include "mesh/io/vtk_format.hpp"
 
 #include <charconv>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <iomanip>
 
 #include "core/atomic_write.hpp"
@@ -46,6 +50,26 @@ void appendNumber(std::string& out, double v) {
   out += ' ';
 }
 
+// A binary DataArray's content: the byte count (UInt32, the default header
+// type) then the values, little-endian as the file declares, in base64.
+std::string base64Block(const std::vector<double>& values) {
+  static_assert(sizeof(double) == 8);
+  std::string bytes(4 + values.size() * 8, '\0');
+  const std::uint32_t size = static_cast<std::uint32_t>(values.size() * 8);
+  for (int b = 0; b < 4; ++b) bytes[b] = static_cast<char>((size >> (8 * b)) & 0xff);
+  if (!values.empty()) std::memcpy(&bytes[4], values.data(), values.size() * 8);
+  static const char* const kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+    std::uint32_t v = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+      v = (v << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
+    for (std::size_t k = 0; k < 4; ++k) out += k <= n ? kDigits[(v >> (18 - 6 * k)) & 63] : '=';
+  }
+  return out;
+}
+
 std::string baseName(const std::string& path) {
   const auto slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);
@@ -53,7 +77,9 @@ std::string baseName(const std::string& path) {
 
 }  // namespace
 
-void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<NodalField>& fields) {
+void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<NodalField>& fields,
+              const std::vector<CellValues>& cellFields) {
+  for (const auto& f : cellFields) checkCellValues(mesh, f, "VTK writer");
   for (const auto& f : fields)
     if (f.components.empty() || f.values.size() != f.components.size() * static_cast<std::size_t>(mesh.nodeCount()))
       throw Error("VTK writer: field '" + f.name + "' has " + std::to_string(f.values.size()) + " values, expected " +
@@ -87,7 +113,23 @@ void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<Nodal
       writeArray(f, f.name, 0, nc);
     }
   }
-  out << "</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  out << "</PointData>\n";
+  if (!cellFields.empty()) {
+    out << "<CellData>\n";
+    for (const auto& f : cellFields) {
+      const std::size_t nc = f.components.size();
+      out << "<DataArray type=\"Float64\" Name=\"" << f.name << "_MEAN\" NumberOfComponents=\"" << nc << "\"";
+      for (std::size_t k = 0; k < nc; ++k) out << " ComponentName" << k << "=\"" << f.components[k] << "\"";
+      // Binary (base64), which holds the NaN of the cells outside the field exactly as it is.
+      out << " format=\"binary\">\n";
+      std::vector<double> mean(static_cast<std::size_t>(mesh.cellCount()) * nc, std::nan(""));
+      for (std::size_t k = 0; k < f.cells.size(); ++k)
+        for (std::size_t c = 0; c < nc; ++c) mean[static_cast<std::size_t>(f.cells[k]) * nc + c] = pointMean(f, k, c);
+      out << base64Block(mean) << "\n</DataArray>\n";
+    }
+    out << "</CellData>\n";
+  }
+  out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   std::string points;
   for (int i = 0; i < mesh.nodeCount(); ++i) {
     const auto x = mesh.node(i);
@@ -128,7 +170,7 @@ void writePvd(const Mesh& mesh, const std::string& pvdPath, const std::vector<Fi
   std::vector<PvdEntry> entries;
   for (std::size_t k = 0; k < instants.size(); ++k) {
     const std::string vtu = stem + "_" + std::to_string(k) + ".vtu";
-    writeVtu(mesh, vtu, instants[k].fields);
+    writeVtu(mesh, vtu, instants[k].fields, instants[k].cellFields);
     entries.push_back({instants[k].time, baseName(vtu)});
   }
   writePvdCollection(pvdPath, entries);

@@ -1,4 +1,4 @@
-// VTK output for ParaView: .vtu (XML, ASCII) with nodal point data, and a .pvd
+// VTK output for ParaView: .vtu (XML, ASCII) with nodal point data and cell data, and a .pvd
 // collection listing one .vtu per instant.
 #pragma once
 #include <string>
@@ -14,7 +14,12 @@ namespace aster::mesh {
 // vector (DX, DY, 0) under the field's name and one scalar array per other
 // component, named <field>_<component> (DEPL_LAGS_C): a multiplier is never
 // drawn as a third displacement. A "cell type" cell array is not written.
-void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<NodalField>& fields = {});
+// Cell fields (at Gauss points, ELGA, or at cell nodes, ELNO) are cell data:
+// per cell the mean of the values at its points, one array per field named
+// <field>_MEAN (SIEF_ELGA_MEAN) with a component per field component (SIXX,
+// SIYY...), NaN on the cells the field does not cover.
+void writeVtu(const Mesh& mesh, const std::string& path, const std::vector<NodalField>& fields = {},
+              const std::vector<CellValues>& cellFields = {});
 
 // Writes <stem>_<k>.vtu per instant next to `pvdPath` and the collection file.
 void writePvd(const Mesh& mesh, const std::string& pvdPath, const std::vector<FieldInstant>& instants);

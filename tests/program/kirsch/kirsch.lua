@@ -51,6 +51,7 @@ for level = 1, 3 do
     }}
   end
 end
+print(string.format('KIRSCH: level 1, error at A %.3e', errors[1]))
 for level = 2, 3 do
   local rate = math.log(errors[level - 1] / errors[level]) / math.log(2)
   print(string.format('KIRSCH: level %d, error at A %.3e, rate %.2f', level, errors[level], rate))
