@@ -11,9 +11,9 @@ set key bottom right
 set grid
 set title "Lamé's thick cylinder: L2 error of the displacement"
 $lame << EOD
-1      5.038e-05  2.361e-06  8.503e-04  1.126e-05
-0.5    1.304e-05  3.067e-07  2.251e-04  1.386e-06
-0.25   3.29e-06   3.873e-08  5.707e-05  1.727e-07
+1      5.038e-05  2.361e-06  8.503e-04  1.134e-05
+0.5    1.304e-05  3.067e-07  2.251e-04  1.392e-06
+0.25   3.29e-06   3.873e-08  5.707e-05  1.73e-07
 EOD
 plot $lame u 1:2 w lp pt 7 t 'AXIS, QUAD4', \
      $lame u 1:3 w lp pt 7 t 'AXIS, QUAD8', \
