@@ -107,6 +107,11 @@ ConceptPtr mecaStatique(const Keywords& k, Session& session, ConceptPtr) {
                   settings.method.c_str(), settings.renum.c_str(),
                   ls.ordering.empty() ? "not reported" : ls.ordering.c_str(), ls.factorNonzeros, flops);
     Messages::info(buf);
+    std::snprintf(buf, sizeof buf,
+                  "MECA_STATIQUE: analysis %.3f s (%d), factorization %.3f s (%d), solves %.3f s (%d)",
+                  ls.analyzeSeconds, ls.analyzeCount, ls.factorizeSeconds, ls.factorizeCount, ls.solveSeconds,
+                  ls.solveCount);
+    Messages::info(buf);
   }
   return result;
 }
