@@ -20,6 +20,7 @@
 #include "analysis/mechanical_system.hpp"
 #include "commands/field_concepts.hpp"
 #include "commands/function_concepts.hpp"
+#include "commands/instant_selection.hpp"
 #include "commands/model_concepts.hpp"
 #include "commands/result_concepts.hpp"
 #include "commands/selection.hpp"
@@ -38,42 +39,11 @@ namespace {
 const std::vector<std::string> kStressComponents{"SIXX", "SIYY", "SIZZ", "SIXY"};
 const std::vector<std::string> kStrainComponents{"EPXX", "EPYY", "EPZZ", "EPXY"};
 
-// The instants of TOUT_ORDRE (default), NUME_ORDRE, INST or LIST_INST.
+// The instants of TOUT_ORDRE (default), NUME_ORDRE, INST or LIST_INST, to complete.
 std::vector<ResultInstant*> selectInstants(ResultConcept& r, const Keywords& k) {
   std::vector<ResultInstant*> out;
-  if (k.has("NUME_ORDRE")) {
-    for (const auto& v : k.values("NUME_ORDRE")) {
-      ResultInstant* found = nullptr;
-      std::string list;
-      for (auto& i : r.instants) {
-        if (i.index == v.integer) found = &i;
-        list += (list.empty() ? "" : ", ") + std::to_string(i.index);
-      }
-      if (!found)
-        throw Error("NUME_ORDRE=" + std::to_string(v.integer) + " is not stored in the result (NUME_ORDRE: " +
-                    (list.empty() ? std::string("none") : list) + ")");
-      out.push_back(found);
-    }
-    return out;
-  }
-  if (!k.has("INST") && !k.has("LIST_INST")) {
-    for (auto& i : r.instants) out.push_back(&i);
-    if (out.empty()) throw Error("RESULTAT: the result holds no instant");
-    return out;
-  }
-  const std::vector<double> times =
-      k.has("INST") ? k.reals("INST") : k.concept<RealListConcept>("LIST_INST")->values;
-  const double precision = k.real("PRECISION");
-  const bool absolute = k.text("CRITERE") == "ABSOLU";
-  for (double t : times) {
-    const ResultInstant* found = nullptr;
-    if (absolute) {
-      for (const auto& i : r.instants)
-        if (!found && std::fabs(i.time - t) <= precision) found = &i;
-    }
-    if (!found) found = &r.at(t, precision);
-    out.push_back(&r.instants[static_cast<std::size_t>(found - r.instants.data())]);
-  }
+  for (const ResultInstant* i : selectedInstants(r, k))
+    out.push_back(&r.instants[static_cast<std::size_t>(i - r.instants.data())]);
   return out;
 }
 

@@ -21,6 +21,22 @@ namespace {
 
 using What = std::vector<std::pair<std::string, std::string>>;
 
+// The node NOEUD or GROUP_NO (a group of one node) names, recorded in `what`; -1
+// when neither is given.
+int designatedNode(const Keywords& occ, const mesh::Mesh& mesh, What& what) {
+  if (occ.has("NOEUD")) {
+    what.push_back({"NOEUD", occ.text("NOEUD")});
+    return mesh.nodeIndex(occ.text("NOEUD"));
+  }
+  if (!occ.has("GROUP_NO")) return -1;
+  const auto& g = mesh.nodeGroup(occ.text("GROUP_NO"));
+  if (g.size() != 1)
+    throw Error(occ.path + ": GROUP_NO " + occ.text("GROUP_NO") + " holds " + std::to_string(g.size()) +
+                " nodes; a check needs a group of one node");
+  what.push_back({"GROUP_NO", occ.text("GROUP_NO")});
+  return g[0];
+}
+
 double reduce(const std::string& test, const mesh::NodalField& f, const std::vector<int>& nodes,
               const std::vector<int>& comps) {
   const std::size_t nc = f.components.size();
@@ -54,20 +70,8 @@ double fieldValue(const Keywords& occ, const mesh::Mesh& mesh, const mesh::Nodal
     what.push_back({"TYPE_TEST", occ.text("TYPE_TEST")});
     return reduce(occ.text("TYPE_TEST"), f, nodes, comps);
   }
-  int node = -1;
-  if (occ.has("NOEUD")) {
-    node = mesh.nodeIndex(occ.text("NOEUD"));
-    what.push_back({"NOEUD", occ.text("NOEUD")});
-  } else if (occ.has("GROUP_NO")) {
-    const auto& g = mesh.nodeGroup(occ.text("GROUP_NO"));
-    if (g.size() != 1)
-      throw Error(occ.path + ": GROUP_NO " + occ.text("GROUP_NO") + " holds " + std::to_string(g.size()) +
-                  " nodes; a check needs a group of one node");
-    node = g[0];
-    what.push_back({"GROUP_NO", occ.text("GROUP_NO")});
-  } else {
-    throw Error(occ.path + ": give NOEUD or GROUP_NO with NOM_CMP, or TYPE_TEST");
-  }
+  const int node = designatedNode(occ, mesh, what);
+  if (node < 0) throw Error(occ.path + ": give NOEUD or GROUP_NO with NOM_CMP, or TYPE_TEST");
   if (!occ.has("NOM_CMP")) throw Error(occ.path + ": give NOM_CMP with the node");
   if (std::find(nodes.begin(), nodes.end(), node) == nodes.end())
     throw Error(occ.path + ": the field " + fieldName + " is not defined at node " + mesh.nodeName(node));
@@ -155,18 +159,7 @@ double cellValue(const Keywords& occ, const CellField& f, const mesh::Mesh& mesh
   const int points = pointsOf(f, k);
   int point = 0;  // 1-based
   if (atNodes && (occ.has("NOEUD") || occ.has("GROUP_NO"))) {
-    int node = -1;
-    if (occ.has("NOEUD")) {
-      node = mesh.nodeIndex(occ.text("NOEUD"));
-      what.push_back({"NOEUD", occ.text("NOEUD")});
-    } else {
-      const auto& g = mesh.nodeGroup(occ.text("GROUP_NO"));
-      if (g.size() != 1)
-        throw Error(occ.path + ": GROUP_NO " + occ.text("GROUP_NO") + " holds " + std::to_string(g.size()) +
-                    " nodes; a check needs a group of one node");
-      node = g[0];
-      what.push_back({"GROUP_NO", occ.text("GROUP_NO")});
-    }
+    const int node = designatedNode(occ, mesh, what);
     const auto nodes = mesh.cellNodes(cell);
     std::string list;
     for (int a = 0; a < nodes.size(); ++a) {
