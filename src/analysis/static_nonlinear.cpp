@@ -330,18 +330,7 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
     linalg::SparseMatrix& A = it.elastic ? KelasticEliminated_ : K_;
     linalg::eliminateFixedUnknowns(A, step.fixed);
     factorized_ = Factorized::None;
-    try {
-      if (!analyzed_) {
-        linalg::chooseBlasThreads(static_cast<int>(A.rows()));
-        solver.analyze(A);
-        analyzed_ = true;
-      }
-      solver.factorize(A);
-    } catch (const linalg::SingularMatrixError& e) {
-      report(it, it.elastic ? "ELASTIQUE" : "TANGENTE");
-      throwSingular(e);
-    }
-    ++stats_.factorizations;
+    factorize(A, false, it);
     factorized_ = it.elastic ? Factorized::Elastic : Factorized::Tangent;
     lastFixed_ = step.fixed;
   }
