@@ -2,7 +2,7 @@ return OPER{ nom = 'DEFI_FONCTION', sd_prod = 'fonction_sdaster', reentrant = 'n
   fr = "Defines a function of one parameter by a table of values (piecewise interpolation).",
   regles = { UN_PARMI('VALE', 'VALE_PARA') },
   SIMP{ 'NOM_PARA', statut = 'o', typ = 'TXM',
-        into = {'INST', 'X', 'Y', 'Z', 'ABSC', 'DX', 'DY', 'EPSI', 'SIGM', 'PRES', 'NEUT1', 'NEUT2'},
+        into = {'INST', 'X', 'Y', 'Z', 'XF', 'YF', 'ZF', 'ABSC', 'DX', 'DY', 'EPSI', 'SIGM', 'PRES', 'NEUT1', 'NEUT2'},
         fr = "Name of the parameter (abscissa)." },
   SIMP{ 'NOM_RESU', typ = 'TXM', defaut = 'TOUTRESU', fr = "Name of the result (ordinate)." },
   SIMP{ 'VALE', typ = 'R', min = 2, max = '**',

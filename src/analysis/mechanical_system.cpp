@@ -219,6 +219,9 @@ Eigen::VectorXd MechanicalSystem::deadLoadVector(const AppliedLoad& applied, dou
   // FIXE_CSTE pressures: -int p N dS on the reference edge (the follower formula at u = 0).
   if (!applied.follower)
     for (const auto& pr : load.pressures) {
+      if (pr.p.dependsOnCurrentPosition())
+        throw Error("PRES_REP PRES depends on the current position (XF, YF, ZF): apply the load as a "
+                    "follower load, EXCIT TYPE_CHARGE='SUIV'");
       auto pressure = [&](const Eigen::Vector2d& p) {
         return loadValue(pr.p, "PRES_REP", "PRES", where, p(0), p(1), 0.0, t);
       };
@@ -334,6 +337,19 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
     auto pressure = [&](const Eigen::Vector2d& p) {
       return factor * loadValue(*e.p, "PRES_REP", "PRES", where, p(0), p(1), 0.0, t);
     };
+    // A pressure of the current position (XF, YF) and its gradient there.
+    auto pressureAtCurrent = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& current,
+                                 Eigen::Vector2d* gradient) {
+      try {
+        const double value = e.p->atCurrentPosition(p(0), p(1), t, current(0), current(1), gradient->data());
+        *gradient *= factor;
+        return factor * value;
+      } catch (const Error& failure) {
+        throw Error("PRES_REP PRES" + where + " at XF = " + format::shortest(current(0)) +
+                    ", YF = " + format::shortest(current(1)) + ", INST = " + format::shortest(t) + ": " +
+                    failure.what());
+      }
+    };
     fem::dispatchEdge(fem::referenceCell(mesh.cellType(e.meshCell), "loads"), [&](auto tag) {
       constexpr fem::CellType T = decltype(tag)::value;
       constexpr int nd = 2 * fem::Cell<T>::nodes;
@@ -341,7 +357,10 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
       mechanics::EdgeVector<T> ue, f;
       mechanics::EdgeMatrix<T> dfdu;
       for (int i = 0; i < nd; ++i) ue(i) = U(d[i]);
-      mechanics::followerPressure<T>(x, ue, pressure, &f, K ? &dfdu : nullptr, axisymmetric);
+      if (e.p->dependsOnCurrentPosition())
+        mechanics::followerPressure<T>(x, ue, pressureAtCurrent, &f, K ? &dfdu : nullptr, axisymmetric);
+      else
+        mechanics::followerPressure<T>(x, ue, pressure, &f, K ? &dfdu : nullptr, axisymmetric);
       for (int i = 0; i < nd; ++i) fext(d[i]) += f(i);
       if (K) {
         mechanics::EdgeMatrix<T> minus = -dfdu;

@@ -18,12 +18,14 @@
 namespace aster::lang {
 namespace {
 
-model::SpaceFunction valueOf(const Keywords& occ, const std::string& key) {
+// currentPosition: the function may depend on XF, YF, ZF (a pressure, which
+// follows the deformed edge when applied with TYPE_CHARGE='SUIV').
+model::SpaceFunction valueOf(const Keywords& occ, const std::string& key, bool currentPosition = false) {
   if (!occ.has(key)) return model::SpaceFunction(0.0);
   const Value& v = occ.value(key);
   if (v.isNumber()) return model::SpaceFunction(v.real);
   try {
-    return model::SpaceFunction(functionOf(v.concept));
+    return model::SpaceFunction(functionOf(v.concept), currentPosition);
   } catch (const Error& e) {
     throw Error(occ.path + "/" + key + ": " + e.what());
   }
@@ -352,7 +354,7 @@ model::MechanicalLoad readMechanical(const model::Model& m, const Keywords& k, c
                     mesh::cellTypeName(mesh.cellType(c)));
     m.checkCellsOnModel(cells, occ.path);
     if (k.text("VERI_NORM") == "OUI") checkOutwardNormals(mesh, occ, cells);
-    load.pressures.push_back({cells, valueOf(occ, "PRES")});
+    load.pressures.push_back({cells, valueOf(occ, "PRES", true)});
   }
   for (const auto& occ : k.factor("FORCE_NODALE"))
     load.nodalForces.push_back({nodesOf(mesh, occ), valueOf(occ, "FX"), valueOf(occ, "FY")});

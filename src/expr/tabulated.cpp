@@ -106,12 +106,36 @@ double Tabulated::valueAt(double x) const {
     }
   }
   if (n == 1) return y_[0];
-  // Segment i with x_[i] <= x <= x_[i+1]; the last point belongs to the last segment.
-  const auto above = std::upper_bound(x_.begin(), x_.end(), x);
-  const std::size_t i = std::min(static_cast<std::size_t>(above - x_.begin()), n - 1) - 1;
+  const std::size_t i = segmentOf(x);
   if (x == x_[i]) return y_[i];  // exact at the points, whatever the law
   if (x == x_[i + 1]) return y_[i + 1];
   return onSegment(i, x);
+}
+
+std::size_t Tabulated::segmentOf(double x) const {
+  // Segment i with x_[i] <= x <= x_[i+1]; the last point belongs to the last segment.
+  const auto above = std::upper_bound(x_.begin(), x_.end(), x);
+  return std::min(static_cast<std::size_t>(above - x_.begin()), x_.size() - 1) - 1;
+}
+
+double Tabulated::slopeOnSegment(std::size_t i, double x) const {
+  const bool logX = options_.abscissa == Interpolation::Logarithmic;
+  const bool logY = options_.ordinate == Interpolation::Logarithmic;
+  const double x0 = logX ? std::log(x_[i]) : x_[i];
+  const double x1 = logX ? std::log(x_[i + 1]) : x_[i + 1];
+  const double y0 = logY ? std::log(y_[i]) : y_[i];
+  const double y1 = logY ? std::log(y_[i + 1]) : y_[i + 1];
+  const double slope = (y1 - y0) / (x1 - x0);  // of the law in its own (log) axes
+  return slope * (logY ? onSegment(i, x) : 1.0) / (logX ? x : 1.0);
+}
+
+double Tabulated::slopeAt(double x) const {
+  valueAt(x);  // the same refusals (nan, EXCLU, LOG of a non-positive abscissa)
+  const std::size_t n = x_.size();
+  if (n == 1) return 0.0;
+  if (x < x_.front()) return options_.left == Extension::Constant ? 0.0 : slopeOnSegment(0, x);
+  if (x > x_.back()) return options_.right == Extension::Constant ? 0.0 : slopeOnSegment(n - 2, x);
+  return slopeOnSegment(segmentOf(x), x);
 }
 
 std::shared_ptr<Tabulated> tabulate(const Function& f, std::vector<double> abscissas,

@@ -39,6 +39,10 @@ class Tabulated : public Function {
   const std::vector<std::string>& parameters() const override { return parameter_; }
   double evaluate(const double* args) const override { return valueAt(args[0]); }
   double valueAt(double x) const;
+  // The derivative of valueAt at x: the slope of the interpolation law of the
+  // segment holding x (the one on its right at a point, the last one at the
+  // last point), 0 on a CONSTANT extension. Throws where valueAt throws.
+  double slopeAt(double x) const;
 
   const std::vector<double>& abscissas() const { return x_; }
   const std::vector<double>& ordinates() const { return y_; }
@@ -47,6 +51,9 @@ class Tabulated : public Function {
  private:
   // The interpolation law of segment [i, i+1], also used to extend it (LINEAIRE).
   double onSegment(std::size_t i, double x) const;
+  double slopeOnSegment(std::size_t i, double x) const;
+  // The segment valueAt interpolates on for x inside [x_front, x_back].
+  std::size_t segmentOf(double x) const;
   [[noreturn]] void outside(double x, const char* side) const;
 
   std::vector<std::string> parameter_;

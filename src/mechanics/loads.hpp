@@ -10,6 +10,7 @@
 // weighted by the radius: the reference X for dead loads, the current x = X + u_x
 // for follower pressures (whose tangent then has the term of dr/du).
 #pragma once
+#include <type_traits>
 #include <Eigen/Core>
 
 #include "fem/edge_geometry.hpp"
@@ -76,14 +77,20 @@ Eigen::Matrix<double, 2 * fem::Cell<T>::nodes, 1> bodyForce(const fem::NodeCoord
 }
 
 // Follower pressure on the deformed edge x = X + u:
-//   f_a = -int p(X) N_a (dy/dxi, -dx/dxi) (r) dxi   (the external force; AXIS: r = X + u_x),
+//   f_a = -int p N_a (dy/dxi, -dx/dxi) (r) dxi   (the external force; AXIS: r = X + u_x),
 //   dfdu = df/du (not symmetric in general). In a Newton tangent for the
 //   residual f_int - f_ext this enters as K_int - dfdu. Either output may be null.
+// The pressure is pressure(X) at the reference point X, or, when it takes
+// (X, x, dpdx), a function of the current point x too that writes its gradient
+// dp/dx in dpdx (code_aster's XF, YF): dfdu then has the term of dp/du.
 template <CellType T, class Pressure>
 void followerPressure(const fem::EdgeCoords<T>& X, const EdgeVector<T>& u, const Pressure& pressure,
                       EdgeVector<T>* f, EdgeMatrix<T>* dfdu, bool axisymmetric = false,
                       int points = defaultEdgeLoadPoints(T)) {
   using C = fem::Cell<T>;
+  constexpr bool ofCurrentPoint =
+      std::is_invocable_r_v<double, const Pressure&, const Eigen::Vector2d&, const Eigen::Vector2d&,
+                            Eigen::Vector2d*>;
   const auto& rule = fem::gaussLegendre(points);
   const Eigen::Map<const Eigen::Matrix<double, 2, C::nodes>> U(u.data());
   if (f) f->setZero();
@@ -93,7 +100,14 @@ void followerPressure(const fem::EdgeCoords<T>& X, const EdgeVector<T>& u, const
     const auto dN = C::gradients(rule.points[q]);
     const Eigen::Vector2d dx = X.transpose() * dN + U * dN;
     const Eigen::Vector2d Xq = X.transpose() * N;
-    const double p = rule.weights[q] * pressure(Xq);
+    Eigen::Vector2d dpdx = Eigen::Vector2d::Zero();
+    double pq;
+    if constexpr (ofCurrentPoint) {
+      pq = pressure(Xq, Eigen::Vector2d(Xq + U * N), &dpdx);
+    } else {
+      pq = pressure(Xq);
+    }
+    const double p = rule.weights[q] * pq;
     const double r = axisymmetric ? Xq(0) + (U * N)(0) : 1.0;
     const double wp = p * r;
     for (int a = 0; a < C::nodes; ++a) {
@@ -109,6 +123,12 @@ void followerPressure(const fem::EdgeCoords<T>& X, const EdgeVector<T>& u, const
             (*dfdu)(2 * a, 2 * b) -= p * N(a) * dx(1) * N(b);
             (*dfdu)(2 * a + 1, 2 * b) += p * N(a) * dx(0) * N(b);
           }
+          if (ofCurrentPoint)  // dp/du_bk = dp/dx_k N_b
+            for (int k = 0; k < 2; ++k) {
+              const double dwp = rule.weights[q] * r * dpdx(k) * N(b);
+              (*dfdu)(2 * a, 2 * b + k) -= dwp * N(a) * dx(1);
+              (*dfdu)(2 * a + 1, 2 * b + k) += dwp * N(a) * dx(0);
+            }
         }
     }
   }

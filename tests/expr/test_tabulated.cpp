@@ -91,6 +91,27 @@ TEST(Tabulated, LogarithmicAxes) {
   EXPECT_THROW(logext({-1.0}), aster::Error);
 }
 
+TEST(Tabulated, Slopes) {
+  // Linear pieces: slope of the segment holding x, the right one at an inner point,
+  // the last one at the last point; 0 on a CONSTANT extension, the end segment's on LINEAIRE.
+  Tabulated f("XF", {-0.1, 0.0, 1.0, 1.1}, {0.0, 5.0, 5.0, 0.0}, options("LIN", "LIN", "EXCLU", "CONSTANT"));
+  EXPECT_DOUBLE_EQ(f.slopeAt(-0.05), 50.0);
+  EXPECT_DOUBLE_EQ(f.slopeAt(0.0), 0.0);
+  EXPECT_NEAR(f.slopeAt(1.05), -50.0, 1e-12);  // 1.1 - 1.0 is not exactly 0.1
+  EXPECT_NEAR(f.slopeAt(1.1), -50.0, 1e-12);
+  EXPECT_DOUBLE_EQ(f.slopeAt(2.0), 0.0);
+  EXPECT_THROW(f.slopeAt(-0.2), aster::Error);  // PROL_GAUCHE='EXCLU'
+  Tabulated g("X", {0, 1}, {1, 3}, options("LIN", "LIN", "LINEAIRE", "LINEAIRE"));
+  EXPECT_DOUBLE_EQ(g.slopeAt(-4.0), 2.0);
+  // The LOG laws: y = x^2 (LOG-LOG) has slope 2x; y = exp(x) (LIN-LOG) slope exp(x); y = ln x slope 1/x.
+  Tabulated loglog("X", {1, 10}, {1, 100}, options("LOG", "LOG", "EXCLU", "EXCLU"));
+  EXPECT_NEAR(loglog.slopeAt(3.0), 6.0, 1e-12);
+  Tabulated linlog("X", {0, 2}, {1, std::exp(2.0)}, options("LIN", "LOG", "EXCLU", "EXCLU"));
+  EXPECT_NEAR(linlog.slopeAt(0.5), std::exp(0.5), 1e-13);
+  Tabulated loglin("X", {1, std::exp(2.0)}, {0, 2}, options("LOG", "LIN", "EXCLU", "EXCLU"));
+  EXPECT_NEAR(loglin.slopeAt(4.0), 0.25, 1e-14);
+}
+
 TEST(Tabulated, SinglePoint) {
   Tabulated c("X", {2}, {7}, options("LIN", "LIN", "CONSTANT", "CONSTANT"));
   EXPECT_EQ(c({-100.0}), 7.0);

@@ -102,3 +102,43 @@ TEST(Loads, FollowerPressureStiffnessMatchesDifferences) {
   pressureStiffness<CellType::SEG2>();
   pressureStiffness<CellType::SEG3>();
 }
+
+// A pressure of the current point x = X + u (code_aster's XF, YF) adds dp/dx N_b to the tangent.
+template <CellType T>
+void currentPointPressureStiffness(bool axisymmetric) {
+  SCOPED_TRACE(fem::cellName(T));
+  constexpr int n = fem::Cell<T>::nodes;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uni(-1, 1);
+  fem::EdgeCoords<T> X;
+  X.row(0) << 1.0, 0.1;
+  X.row(1) << 2.0, -0.1;
+  if (n == 3) X.row(2) << 1.5, 0.15;
+  auto p = [](const Eigen::Vector2d& ref, const Eigen::Vector2d& x, Eigen::Vector2d* dpdx) {
+    *dpdx << 2.0 * x(0) * x(1) + ref(1), x(0) * x(0);
+    return 2.0 + x(0) * x(0) * x(1) + ref(1) * x(0);
+  };
+  for (int trial = 0; trial < 3; ++trial) {
+    EdgeVector<T> u, f, fp, fm;
+    for (int i = 0; i < 2 * n; ++i) u(i) = 0.2 * uni(rng);
+    EdgeMatrix<T> K, Kfd;
+    followerPressure<T>(X, u, p, &f, &K, axisymmetric);
+    const double h = 1e-6;
+    for (int j = 0; j < 2 * n; ++j) {
+      EdgeVector<T> up = u, um = u;
+      up(j) += h;
+      um(j) -= h;
+      followerPressure<T>(X, up, p, &fp, nullptr, axisymmetric);
+      followerPressure<T>(X, um, p, &fm, nullptr, axisymmetric);
+      Kfd.col(j) = (fp - fm) / (2 * h);
+    }
+    EXPECT_LT((K - Kfd).norm(), 1e-8 * K.norm());
+  }
+}
+
+TEST(Loads, PressureOfTheCurrentPointStiffnessMatchesDifferences) {
+  for (bool axis : {false, true}) {
+    currentPointPressureStiffness<CellType::SEG2>(axis);
+    currentPointPressureStiffness<CellType::SEG3>(axis);
+  }
+}
