@@ -1,6 +1,8 @@
 // IMPR_FONCTION: curves (functions, or explicit abscissas and ordinates) as
-// columns of values (TABLEAU), or plotted to PNG / SVG by gnuplot, run as a
-// process on a generated script and data files kept in the output folder.
+// columns of values (TABLEAU), as a Grace project file (XMGRACE), or plotted to
+// an image (PNG, SVG; XMGRACE with PILOTE: EPS, POSTSCRIPT, PDF, PNG, SVG) by
+// gnuplot, run as a process on a generated script and data files kept in the
+// output folder.
 // The command writes the script and the data; one gnuplot draws every plot of
 // the run at its end (Session::plots), whatever ends it.
 // PENTE='OUI' adds each curve's least-squares slope of log y against log x to its
@@ -178,6 +180,63 @@ std::vector<std::string> drawPlots(const std::vector<Session::PlotScript>& plots
   return failures;
 }
 
+// A text for a Grace project's double-quoted string: Grace reads its own escapes
+// (\s2\N) in it, so they are kept; a quote or a control character is not text.
+std::string graceString(const std::string& s) {
+  std::string out = "\"";
+  for (const char ch : s) {
+    const auto byte = static_cast<unsigned char>(ch);
+    out += ch == '"' ? '\'' : (byte < 0x20 || byte == 0x7f) ? ' ' : ch;
+  }
+  return out + "\"";
+}
+
+// XMGRACE without PILOTE: the curves as a Grace project (.agr), which xmgrace opens.
+std::string graceProject(const Keywords& k, const std::vector<Curve>& curves) {
+  std::ostringstream out;
+  out << "# Grace project file\n@version 50125\n";
+  if (k.has("TITRE")) out << "@title " << graceString(k.text("TITRE")) << "\n";
+  if (k.has("SOUS_TITRE")) out << "@subtitle " << graceString(k.text("SOUS_TITRE")) << "\n";
+  out << "@with g0\n";
+  if (k.has("BORNE_X")) out << "@    world xmin " << number(k.reals("BORNE_X")[0]) << "\n@    world xmax " << number(k.reals("BORNE_X")[1]) << "\n";
+  if (k.has("BORNE_Y")) out << "@    world ymin " << number(k.reals("BORNE_Y")[0]) << "\n@    world ymax " << number(k.reals("BORNE_Y")[1]) << "\n";
+  out << "@    xaxes scale " << (k.text("ECHELLE_X") == "LOG" ? "Logarithmic" : "Normal") << "\n";
+  out << "@    yaxes scale " << (k.text("ECHELLE_Y") == "LOG" ? "Logarithmic" : "Normal") << "\n";
+  if (k.has("LEGENDE_X")) out << "@    xaxis label " << graceString(k.text("LEGENDE_X")) << "\n";
+  if (k.has("LEGENDE_Y")) out << "@    yaxis label " << graceString(k.text("LEGENDE_Y")) << "\n";
+  if (k.has("GRILLE_X")) out << "@    xaxis tick major " << number(k.real("GRILLE_X")) << "\n";
+  if (k.has("GRILLE_Y")) out << "@    yaxis tick major " << number(k.real("GRILLE_Y")) << "\n";
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const Curve& c = curves[i];
+    out << "@    s" << i << " legend " << graceString(c.legend) << "\n";
+    if (c.style >= 0) out << "@    s" << i << " line linestyle " << c.style << "\n";
+    if (c.colour > 0) out << "@    s" << i << " line color " << c.colour << "\n";
+    if (c.marker >= 0) out << "@    s" << i << " symbol " << c.marker << "\n";
+  }
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    out << "@target G0.S" << i << "\n@type xy\n";
+    for (std::size_t j = 0; j < curves[i].x.size(); ++j)
+      out << number(curves[i].x[j]) << " " << number(curves[i].y[j]) << "\n";
+    out << "&\n";
+  }
+  return out.str();
+}
+
+// gnuplot's terminal and the image's extension for FORMAT (PNG, SVG) or XMGRACE's PILOTE.
+struct ImageKind {
+  const char* terminal;
+  const char* extension;
+};
+
+ImageKind imageKind(const std::string& name) {
+  if (name == "PNG") return {"pngcairo size 900,650", ".png"};
+  if (name == "SVG") return {"svg size 900,650", ".svg"};
+  if (name == "EPS") return {"epscairo size 9in,6.5in", ".eps"};
+  if (name == "POSTSCRIPT") return {"postscript landscape", ".ps"};
+  if (name == "PDF") return {"pdfcairo size 9in,6.5in", ".pdf"};
+  throw Error("no image format " + name);  // the catalogue's into lists only the above
+}
+
 ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   std::vector<Curve> curves;
   for (const auto& occ : k.factor("COURBE")) curves.push_back(curveOf(occ, session));
@@ -215,7 +274,17 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
     }
     return nullptr;
   }
-  const std::string ext = format == "PNG" ? ".png" : ".svg";
+  if (format == "XMGRACE" && k.text("PILOTE").empty()) {
+    const auto path = bound != session.units.end() ? bound->second
+                                                   : session.outputFile("fort." + std::to_string(unit) + ".agr");
+    session.checkUnitWritable(unit, path);
+    const std::string project = graceProject(k, curves);
+    session.writeFile(path, [&](const std::filesystem::path& tmp) { writeTextFile(tmp, project); });
+    Messages::info("IMPR_FONCTION: Grace project " + path.string());
+    return nullptr;
+  }
+  const ImageKind kind = imageKind(format == "XMGRACE" ? k.text("PILOTE") : format);
+  const std::string ext = kind.extension;
   static int plots = 0;
   ++plots;
   std::filesystem::path image = bound != session.units.end()
@@ -230,7 +299,7 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   const std::string stem = session.files.fresh(dir, image.stem().string(), ".gp").stem().string();
   std::ostringstream gp;
   gp << "reset session\n";  // the scripts of a run are drawn by one gnuplot, one after the other
-  gp << "set terminal " << (format == "PNG" ? "pngcairo" : "svg") << " size 900,650 noenhanced font 'Sans,11'\n";
+  gp << "set terminal " << kind.terminal << " noenhanced font 'Sans,11'\n";
   // Paths absolute: gnuplot takes a file name starting with '|' or '<' for a command.
   gp << "set output " << gnuplotString(std::filesystem::absolute(image).string()) << "\n";
   std::string title = k.has("TITRE") ? k.text("TITRE") : "";
@@ -265,7 +334,7 @@ ConceptPtr imprFonction(const Keywords& k, Session& session, ConceptPtr) {
   const auto script = dir / (stem + ".gp");
   session.writeFile(script, [&](const std::filesystem::path& tmp) { writeTextFile(tmp, gp.str()); });
   if (findProgram("gnuplot").empty())
-    throw Error("FORMAT='PNG'/'SVG' runs gnuplot, which is not installed (Debian/Ubuntu: apt-get install gnuplot-nox); "
+    throw Error("an image (FORMAT='PNG'/'SVG', XMGRACE with PILOTE) is drawn by gnuplot, which is not installed (Debian/Ubuntu: apt-get install gnuplot-nox); "
                 "the script is " + script.string());
   std::error_code ec;
   std::filesystem::remove(image, ec);  // an image left by an earlier run must not pass for this one

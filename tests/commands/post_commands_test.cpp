@@ -239,6 +239,25 @@ IMPR_FONCTION{FORMAT='PNG', UNITE=29, PENTE='OUI', ECHELLE_X='LOG', ECHELLE_Y='L
   EXPECT_GT(fs::file_size(r.dir / "out" / "convergence.png"), 1000u);
 }
 
+TEST(PostCommands, ImprFonctionXmgrace) {
+  // Without PILOTE, a Grace project: the sets in order, Grace's escapes kept in
+  // the texts (code_aster's titles use them), a quote in a text made harmless.
+  const auto r = run("grace", R"(
+DEFI_FICHIER{ACTION='ASSOCIER', UNITE=82, FICHIER='out/courbe.agr'}
+IMPR_FONCTION{FORMAT='XMGRACE', UNITE=82, TITRE=[[Erreur en norme L\s2\N]], ECHELLE_X='LOG', LEGENDE_Y='say "h"',
+  BORNE_X={0.5, 4}, COURBE={{ABSCISSE={1, 2}, ORDONNEE={3, 0.75}, LEGENDE='e'}, {ABSCISSE={1}, ORDONNEE={2}}}}
+DEFI_FICHIER{ACTION='ASSOCIER', UNITE=83, FICHIER='out/courbe.eps'}
+IMPR_FONCTION{FORMAT='XMGRACE', UNITE=83, PILOTE='EPS', COURBE={ABSCISSE={1, 2}, ORDONNEE={3, 0.75}}}
+)");
+  EXPECT_EQ(r.status, 0) << r.err << r.out;
+  EXPECT_EQ(readFile(r.dir / "out" / "courbe.agr"),
+            "# Grace project file\n@version 50125\n@title \"Erreur en norme L\\s2\\N\"\n@with g0\n"
+            "@    world xmin 0.5\n@    world xmax 4\n@    xaxes scale Logarithmic\n@    yaxes scale Normal\n"
+            "@    yaxis label \"say 'h'\"\n@    s0 legend \"e\"\n@    s1 legend \"\"\n"
+            "@target G0.S0\n@type xy\n1 3\n2 0.75\n&\n@target G0.S1\n@type xy\n1 2\n&\n");
+  EXPECT_EQ(readFile(r.dir / "out" / "courbe.eps").rfind("%!PS-Adobe", 0), 0u);
+}
+
 TEST(PostCommands, ClearErrors) {
   // ELNO fields are extracted from results only: AFFE of one is refused clearly.
   auto r = run("err1", R"(
