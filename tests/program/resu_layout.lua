@@ -1,0 +1,39 @@
+-- expect-exit: 1
+-- expect-output: SKIP  NON_REGRESSION.*NOOK  NON_REGRESSION.*<I> checks: 11 OK, 1 NOOK
+-- The .resu layout of every kind of check, on values exact in binary (0.5, -0.25,
+-- sums of them; SOMM_ABS of S: 2 cells x 4 Gauss points x (2 + 0.5) = 20), compared line by line with resu_layout.expected (written by hand
+-- from code_aster's layout: tests/program/CMakeLists.txt runs the comparison).
+DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'two_quad4.mail'}
+MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
+MO = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
+U = CREA_CHAMP{TYPE_CHAM = 'NOEU_DEPL_R', OPERATION = 'AFFE', MAILLAGE = MA,
+               AFFE = {TOUT = 'OUI', NOM_CMP = {'DX', 'DY'}, VALE = {0.5, -0.25}}}
+S = CREA_CHAMP{TYPE_CHAM = 'ELGA_SIEF_R', OPERATION = 'AFFE', MODELE = MO,
+               AFFE = {GROUP_MA = 'SURFACE', NOM_CMP = {'SIXX', 'SIYY'}, VALE = {2.0, -0.5}}}
+Z = CREA_CHAMP{TYPE_CHAM = 'NOEU_DEPL_R', OPERATION = 'AFFE', MAILLAGE = MA,
+               AFFE = {TOUT = 'OUI', NOM_CMP = {'DX', 'DY'}, VALE = {0.0, 1e-9}}}
+TEST_RESU{CHAM_NO = {
+  {CHAM_GD = U, NOEUD = 'N3', NOM_CMP = 'DX', VALE_CALC = 0.5, REFERENCE = 'ANALYTIQUE', VALE_REFE = 0.5},
+  {CHAM_GD = U, TYPE_TEST = 'SOMM', NOM_CMP = 'DY', VALE_CALC = -1.5},
+  {CHAM_GD = U, GROUP_NO = 'COIN', NOM_CMP = 'DY', VALE_ABS = 'OUI', VALE_CALC = 0.25, LEGENDE = 'ABS'},
+}}
+TEST_RESU{CHAM_ELEM = {
+  {CHAM_GD = S, MAILLE = 'M2', POINT = 3, NOM_CMP = 'SIYY', VALE_CALC = -0.5},
+  {CHAM_GD = S, TYPE_TEST = 'SOMM_ABS', VALE_CALC = 20.0},
+}}
+-- A zero VALE_CALC: skipped without ORDRE_GRANDEUR, absolute within 1e-6 * 1000 with it.
+TEST_RESU{CHAM_NO = {
+  {CHAM_GD = Z, NOEUD = 'N1', NOM_CMP = 'DX', VALE_CALC = 0.0},
+  {CHAM_GD = Z, NOEUD = 'N1', NOM_CMP = 'DY', VALE_CALC = 0.0, ORDRE_GRANDEUR = 1000.0, CRITERE = 'ABSOLU'},
+}}
+T = CREA_TABLE{LISTE = {{PARA = 'NOM', LISTE_K = {'A', 'B'}}, {PARA = 'N', LISTE_I = {3, 4}},
+                        {PARA = 'V', LISTE_R = {0.5, 0.75}}}}
+TEST_TABLE{TABLE = T, NOM_PARA = 'V', FILTRE = {NOM_PARA = 'NOM', VALE_K = 'B'}, VALE_CALC = 0.75}
+TEST_TABLE{TABLE = T, NOM_PARA = 'N', TYPE_TEST = 'SOMM', VALE_CALC_I = 7}
+TEST_TABLE{TABLE = T, NOM_PARA = 'NOM', FILTRE = {NOM_PARA = 'N', VALE_I = 3}, VALE_CALC_K = 'A'}
+F = FORMULE{VALE = 'X/4', NOM_PARA = 'X'}
+TEST_FONCTION{VALEUR = {FONCTION = F, NOM_PARA = 'X', VALE_PARA = 2.0, VALE_CALC = 0.5,
+                        REFERENCE = 'ANALYTIQUE', VALE_REFE = 0.5}}
+-- A deliberately wrong VALE_CALC (0.3 for 0.5): NOOK.
+TEST_RESU{CHAM_NO = {CHAM_GD = U, NOEUD = 'N2', NOM_CMP = 'DX', VALE_CALC = 0.3}}
+FIN{}
