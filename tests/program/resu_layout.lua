@@ -1,5 +1,5 @@
 -- expect-exit: 1
--- expect-output: SKIP  NON_REGRESSION.*NOOK  NON_REGRESSION.*<I> checks: 11 OK, 1 NOOK
+-- expect-output: SKIP  NON_REGRESSION.*NOOK  NON_REGRESSION.*<I> checks: 15 OK, 1 NOOK
 -- The .resu layout of every kind of check, on values exact in binary (0.5, -0.25,
 -- sums of them; SOMM_ABS of S: 2 cells x 4 Gauss points x (2 + 0.5) = 20), compared line by line with resu_layout.expected (written by hand
 -- from code_aster's layout: tests/program/CMakeLists.txt runs the comparison).
@@ -34,6 +34,19 @@ TEST_TABLE{TABLE = T, NOM_PARA = 'NOM', FILTRE = {NOM_PARA = 'N', VALE_I = 3}, V
 F = FORMULE{VALE = 'X/4', NOM_PARA = 'X'}
 TEST_FONCTION{VALEUR = {FONCTION = F, NOM_PARA = 'X', VALE_PARA = 2.0, VALE_CALC = 0.5,
                         REFERENCE = 'ANALYTIQUE', VALE_REFE = 0.5}}
+-- A result: every node imposed (AFFE_CHAR_CINE), DEPL is exactly the imposed values.
+-- INST = 1e-4 finds the instant 0 only absolutely: CRITERE and TOLE_MACHINE's second values.
+MAT = DEFI_MATERIAU{ELAS = {E = 1000.0, NU = 0.25}}
+CM = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MAT}}
+BC = AFFE_CHAR_CINE{MODELE = MO, MECA_IMPO = {TOUT = 'OUI', DX = 0.5, DY = -0.25}}
+R = MECA_STATIQUE{MODELE = MO, CHAM_MATER = CM, EXCIT = {CHARGE = BC}}
+TEST_RESU{RESU = {
+  {RESULTAT = R, INST = 0.0, NOM_CHAM = 'DEPL', NOEUD = 'N4', NOM_CMP = 'DX', VALE_CALC = 0.5},
+  {RESULTAT = R, INST = 1e-4, CRITERE = {'RELATIF', 'ABSOLU'}, TOLE_MACHINE = {1e-6, 1e-3}, NOM_CHAM = 'DEPL',
+   GROUP_NO = 'COIN', NOM_CMP = 'DY', VALE_CALC = -0.25},
+  {RESULTAT = R, NUME_ORDRE = 1, PARA = 'INST', VALE_CALC = 0.0, ORDRE_GRANDEUR = 1.0, CRITERE = 'ABSOLU'},
+  {RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', TYPE_TEST = 'MAX', VALE_CALC = 0.5},
+}, INFO = 2}
 -- A deliberately wrong VALE_CALC (0.3 for 0.5): NOOK.
 TEST_RESU{CHAM_NO = {CHAM_GD = U, NOEUD = 'N2', NOM_CMP = 'DX', VALE_CALC = 0.3}}
 FIN{}
