@@ -3,6 +3,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "core/atomic_write.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
 
@@ -56,8 +57,25 @@ void recordCheck(Session& session, double computed, const post::CheckSpec& spec,
       Messages::alarm(what.front().first, "VALE_CALC is 0 and ORDRE_GRANDEUR is not given: the non-regression check of " +
                                        what.front().second + " is skipped (give ORDRE_GRANDEUR, the magnitude of the value)");
   }
+  std::vector<CheckRecord> records;
+  for (const auto& l : lines) {
+    const auto text = [&](double v) { return l.integer ? std::to_string(static_cast<long long>(v)) : post::pythonRepr(v); };
+    records.push_back({l.diag == post::CheckLine::Diag::Ok ? "OK" : l.diag == post::CheckLine::Diag::Nook ? "NOOK" : "SKIP",
+                       l.reference, text(l.computed), text(l.expected)});
+  }
+  appendCheckRecords(session, records);
   session.recordCheck(prefix + post::formatHeader(what, headerLeadingBlank) + post::formatLines(lines, spec.legende) + "  \n",
                       ok);
+}
+
+void appendCheckRecords(Session& session, const std::vector<CheckRecord>& records) {
+  std::string text;
+  for (const auto& r : records)
+    text += r.diag + "\t" + session.command + "\t" + session.where + "\t" + r.reference + "\t" + r.computed + "\t" +
+            r.expected + "\n";
+  const auto path = session.outputFile(session.resuPath().stem().string() + ".checks");
+  if (!session.studyPath.empty()) session.files.addInput(session.studyPath, "the study file");
+  appendAtomically(path, text, session.files.written(path), &session.files);
 }
 
 }  // namespace aster::lang

@@ -30,4 +30,13 @@ using CheckWhat = std::vector<std::pair<std::string, std::string>>;
 void recordCheck(Session& session, double computed, const post::CheckSpec& spec, const CheckWhat& what,
                  bool headerLeadingBlank = true, const std::string& prefix = "");
 
+// One comparison for <output>/<study>.checks, the machine-readable record of the
+// checks: one line per comparison, fields separated by tabs:
+//   OK|NOOK|SKIP  command  file:line  reference  computed  expected
+// (reference: NON_REGRESSION, ANALYTIQUE, ...; values as in the .resu).
+struct CheckRecord {
+  std::string diag, reference, computed, expected;
+};
+void appendCheckRecords(Session& session, const std::vector<CheckRecord>& records);
+
 }  // namespace aster::lang

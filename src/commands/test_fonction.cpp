@@ -38,6 +38,10 @@ ConceptPtr testFonction(const Keywords& k, Session& session, ConceptPtr) {
     const std::string block = prefix + " ---- FONCTION         " + padded(nomPara) + "\n      " +
                               padded(session.nameOf(*fc)) + " " + padded(pythonStr(x.back())) + " \n" +
                               post::formatFunctionLines(lines, spec.legende) + " \n";
+    std::vector<CheckRecord> records;
+    for (const auto& l : lines)
+      records.push_back({l.ok() ? "OK" : "NOOK", l.reference, post::pythonRepr(l.computed), post::pythonRepr(l.expected)});
+    appendCheckRecords(session, records);
     session.recordCheck(block, ok);
     prefix.clear();
   }

@@ -53,6 +53,12 @@ ConceptPtr testTable(const Keywords& k, Session& session, ConceptPtr) {
       block += post::formatTextLine(refe == got, k.text("REFERENCE"), legende, refe, got, false);
       ok = ok && refe == got;
     }
+    std::vector<CheckRecord> records{{calc == got ? "OK" : "NOOK", "NON_REGRESSION", got, calc}};
+    if (k.has("REFERENCE")) {
+      const std::string refe = matchOf(k.texts("VALE_REFE_K"));
+      records.push_back({refe == got ? "OK" : "NOOK", k.text("REFERENCE"), got, refe});
+    }
+    appendCheckRecords(session, records);
     session.recordCheck(block + "  \n", ok);
     return nullptr;
   }
