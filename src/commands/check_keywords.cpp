@@ -49,23 +49,25 @@ InstantLookup instantLookupOf(const Keywords& k) {
 
 void recordCheck(Session& session, double computed, const post::CheckSpec& spec, const CheckWhat& what,
                  bool headerLeadingBlank, const std::string& prefix) {
+  recordCheckLines(session, computed, spec, prefix + post::formatHeader(what, headerLeadingBlank), what.front().first);
+}
+
+void recordCheckLines(Session& session, double computed, const post::CheckSpec& spec, const std::string& header,
+                      const std::string& origin) {
   const auto lines = post::check(computed, spec);
   bool ok = true;
+  std::vector<CheckRecord> records;
   for (const auto& l : lines) {
     ok = ok && l.ok();
     if (l.diag == post::CheckLine::Diag::Skip)
-      Messages::alarm(what.front().first, "VALE_CALC is 0 and ORDRE_GRANDEUR is not given: the non-regression check of " +
-                                       what.front().second + " is skipped (give ORDRE_GRANDEUR, the magnitude of the value)");
-  }
-  std::vector<CheckRecord> records;
-  for (const auto& l : lines) {
+      Messages::alarm(origin, "VALE_CALC is 0 and ORDRE_GRANDEUR is not given: the non-regression check at " +
+                                  session.where + " is skipped (give ORDRE_GRANDEUR, the magnitude of the value)");
     const auto text = [&](double v) { return l.integer ? std::to_string(static_cast<long long>(v)) : post::pythonRepr(v); };
     records.push_back({l.diag == post::CheckLine::Diag::Ok ? "OK" : l.diag == post::CheckLine::Diag::Nook ? "NOOK" : "SKIP",
                        l.reference, text(l.computed), text(l.expected)});
   }
   appendCheckRecords(session, records);
-  session.recordCheck(prefix + post::formatHeader(what, headerLeadingBlank) + post::formatLines(lines, spec.legende) + "  \n",
-                      ok);
+  session.recordCheck(header + post::formatLines(lines, spec.legende) + "  \n", ok);
 }
 
 void appendCheckRecords(Session& session, const std::vector<CheckRecord>& records) {

@@ -30,6 +30,10 @@ using CheckWhat = std::vector<std::pair<std::string, std::string>>;
 void recordCheck(Session& session, double computed, const post::CheckSpec& spec, const CheckWhat& what,
                  bool headerLeadingBlank = true, const std::string& prefix = "");
 
+// The same with the header written by the caller (`origin` names the check in alarms).
+void recordCheckLines(Session& session, double computed, const post::CheckSpec& spec, const std::string& header,
+                      const std::string& origin);
+
 // One comparison for <output>/<study>.checks, the machine-readable record of the
 // checks: one line per comparison, fields separated by tabs:
 //   OK|NOOK|SKIP  command  file:line  reference  computed  expected

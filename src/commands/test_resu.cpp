@@ -11,6 +11,7 @@
 #include "commands/check_keywords.hpp"
 #include "commands/elga_field.hpp"
 #include "commands/field_concepts.hpp"
+#include "commands/mesh_concept.hpp"
 #include "core/error.hpp"
 #include "core/number_format.hpp"
 #include "lang/operators.hpp"
@@ -221,7 +222,33 @@ void needsReal(const Keywords& occ, const std::string& what) {
     throw Error(occ.path + ": " + what + " holds real values: give VALE_CALC (and VALE_REFE), not VALE_CALC_I");
 }
 
+// A count of a mesh (MAILLAGE's CARA); a group the mesh lacks counts 0, as in code_aster.
+long long meshCount(const Keywords& occ, const mesh::Mesh& m) {
+  const std::string cara = occ.text("CARA");
+  if (cara == "NB_MAILLE") return m.cellCount();
+  if (cara == "NB_NOEUD") return m.nodeCount();
+  if (cara == "NB_GROUP_MA") return static_cast<long long>(m.cellGroupNames().size());
+  if (cara == "NB_GROUP_NO") return static_cast<long long>(m.nodeGroupNames().size());
+  const bool cells = cara == "NB_MA_GROUP_MA";
+  const char* key = cells ? "NOM_GROUP_MA" : "NOM_GROUP_NO";
+  if (!occ.has(key)) throw Error(occ.path + ": CARA='" + cara + "' counts the members of a group: give " + key);
+  const std::string g = occ.text(key);
+  if (cells) return m.hasCellGroup(g) ? static_cast<long long>(m.cellGroup(g).size()) : 0;
+  return m.hasNodeGroup(g) ? static_cast<long long>(m.nodeGroup(g).size()) : 0;
+}
+
 ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
+  // code_aster opens each TEST_RESU with a blank line and a rule of 80 dashes.
+  std::string rule = "\n" + std::string(80, '-') + "\n";
+  for (const auto& occ : k.factor("MAILLAGE")) {
+    const auto c = occ.conceptPtr("MAILLAGE");
+    // code_aster's header of a mesh check: two fixed lines, the name in 8 characters.
+    std::string name = session.nameOf(*c);
+    if (name.size() < 8) name.resize(8, ' ');
+    const std::string header = " ---- MAILLAGE \n      " + name + "\n";
+    recordCheckLines(session, static_cast<double>(meshCount(occ, meshOf(c))), checkSpecOf(occ), rule + header, "MAILLAGE");
+    rule.clear();
+  }
   for (const auto& occ : k.factor("CHAM_NO")) {
     const auto c = occ.conceptPtr("CHAM_GD");
     const auto f = std::dynamic_pointer_cast<NodalFieldConcept>(c);
@@ -230,7 +257,8 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
     What what{{"CHAM_NO", session.nameOf(*c)}};
     designationColumns(occ, true, false, false, what);
     const double v = fieldValue(occ, *f->mesh, f->field, f->support, session.nameOf(*c));
-    recordCheck(session, v, checkSpecOf(occ), what);
+    recordCheck(session, v, checkSpecOf(occ), what, true, rule);
+    rule.clear();
   }
   for (const auto& occ : k.factor("CHAM_ELEM")) {
     const auto c = occ.conceptPtr("CHAM_GD");
@@ -244,7 +272,8 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
     const Present present = [&](std::size_t kc, std::size_t cc) { return componentPresent(*g, kc, cc); };
     const double v = cellValue(occ, g->field, *g->mesh, present, session.nameOf(*c));
     // code_aster writes the header of one value of a CHAM_ELEM without Fortran's leading blank.
-    recordCheck(session, v, checkSpecOf(occ), what, occ.has("TYPE_TEST"));
+    recordCheck(session, v, checkSpecOf(occ), what, occ.has("TYPE_TEST"), rule);
+    rule.clear();
   }
   for (const auto& occ : k.factor("RESU")) {
     const auto r = occ.concept<ResultConcept>("RESULTAT");
@@ -268,7 +297,8 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
       } else {
         throw Error(occ.path + ": PARA='" + p + "' is not stored; available: ITER_GLOB, INST");
       }
-      recordCheck(session, v, checkSpecOf(occ), what);
+      recordCheck(session, v, checkSpecOf(occ), what, true, rule);
+      rule.clear();
       continue;
     }
     const std::string name = occ.text("NOM_CHAM");
@@ -278,7 +308,8 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
     if (const CellField* cf = ResultConcept::cellField(inst, name)) {
       const Present all = [](std::size_t, std::size_t) { return true; };
       designationColumns(occ, false, true, true, what);
-      recordCheck(session, cellValue(occ, *cf, model.mesh(), all, name), checkSpecOf(occ), what);
+      recordCheck(session, cellValue(occ, *cf, model.mesh(), all, name), checkSpecOf(occ), what, true, rule);
+      rule.clear();
       continue;
     }
     for (const char* key : {"GROUP_MA", "MAILLE", "POINT", "SOUS_POINT"})
@@ -288,7 +319,8 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
     designationColumns(occ, false, false, true, what);
     const double v = fieldValue(occ, model.mesh(), ResultConcept::nodalField(inst, name),
                                 r->nodalSupportOf(inst, name), name);
-    recordCheck(session, v, checkSpecOf(occ), what);
+    recordCheck(session, v, checkSpecOf(occ), what, true, rule);
+    rule.clear();
   }
   return nullptr;
 }

@@ -1,5 +1,5 @@
 -- expect-exit: 1
--- expect-output: SKIP  NON_REGRESSION.*NOOK  NON_REGRESSION.*<I> checks: 15 OK, 1 NOOK
+-- expect-output: SKIP  NON_REGRESSION.*NOOK  NON_REGRESSION.*<I> checks: 17 OK, 1 NOOK
 -- The .resu layout of every kind of check, on values exact in binary (0.5, -0.25,
 -- sums of them; SOMM_ABS of S: 2 cells x 4 Gauss points x (2 + 0.5) = 20), compared line by line with resu_layout.expected (written by hand
 -- from code_aster's layout: tests/program/CMakeLists.txt runs the comparison).
@@ -12,10 +12,15 @@ S = CREA_CHAMP{TYPE_CHAM = 'ELGA_SIEF_R', OPERATION = 'AFFE', MODELE = MO,
                AFFE = {GROUP_MA = 'SURFACE', NOM_CMP = {'SIXX', 'SIYY'}, VALE = {2.0, -0.5}}}
 Z = CREA_CHAMP{TYPE_CHAM = 'NOEU_DEPL_R', OPERATION = 'AFFE', MAILLAGE = MA,
                AFFE = {TOUT = 'OUI', NOM_CMP = {'DX', 'DY'}, VALE = {0.0, 1e-9}}}
+-- MAILLAGE's checks come first, whatever the order of the keywords (code_aster's order).
 TEST_RESU{CHAM_NO = {
   {CHAM_GD = U, NOEUD = 'N3', NOM_CMP = 'DX', VALE_CALC = 0.5, REFERENCE = 'ANALYTIQUE', VALE_REFE = 0.5},
   {CHAM_GD = U, TYPE_TEST = 'SOMM', NOM_CMP = 'DY', VALE_CALC = -1.5},
   {CHAM_GD = U, GROUP_NO = 'COIN', NOM_CMP = 'DY', VALE_ABS = 'OUI', VALE_CALC = 0.25, LEGENDE = 'ABS'},
+}, MAILLAGE = {
+  {MAILLAGE = MA, CARA = 'NB_MAILLE', VALE_CALC_I = 7},
+  {MAILLAGE = MA, CARA = 'NB_MA_GROUP_MA', NOM_GROUP_MA = 'SURFACE', VALE_CALC_I = 2, REFERENCE = 'ANALYTIQUE',
+   VALE_REFE_I = 2},
 }}
 TEST_RESU{CHAM_ELEM = {
   {CHAM_GD = S, MAILLE = 'M2', POINT = 3, NOM_CMP = 'SIYY', VALE_CALC = -0.5},
