@@ -4,7 +4,7 @@ local TYPE_TEST = {'SOMM_ABS', 'SOMM', 'MAX', 'MIN'}
 
 return PROC{ nom = 'TEST_RESU',
   fr = "Checks values of fields and results against expected values; prints OK or NOOK for each.",
-  regles = { AU_MOINS_UN('MAILLAGE', 'CHAM_NO', 'CHAM_ELEM', 'RESU') },
+  regles = { AU_MOINS_UN('MAILLAGE', 'CHAM_NO', 'CHAM_ELEM', 'RESU', 'TEST_NAN') },
   FACT{ 'MAILLAGE', max = '**', fr = "Checks a count of a mesh (an integer: VALE_CALC_I).",
     regles = { UN_PARMI('VALE_CALC_I') },
     SIMP{ 'MAILLAGE', statut = 'o', typ = 'maillage_sdaster', fr = "The mesh." },
@@ -65,6 +65,8 @@ return PROC{ nom = 'TEST_RESU',
           fr = "Over the whole field: sum of absolute values, sum, largest or smallest value." },
     C_TEST_REFERENCE({'R', 'I'}, true),
   },
+  SIMP{ 'TEST_NAN', typ = 'TXM', into = {'OUI', 'NON'},
+        fr = "code_aster's test of its own trap of NaN in Fortran: no check; accepted and ignored." },
   SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2},
         fr = "Verbosity of code_aster's listing: accepted and ignored (the checks and their output are the same)." },
 }
