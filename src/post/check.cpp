@@ -251,12 +251,17 @@ std::string formatFunctionLines(const std::vector<CheckLine>& lines, const std::
   std::string out;
   bool label = true;
   for (const auto& l : lines) {
+    // Digits of log10, bounded (a zero tolerance or an infinite value gives the most digits).
+    const auto digitsOf = [](double x) {
+      const double d = std::log10(std::fabs(x));
+      return std::isfinite(d) ? static_cast<int>(std::clamp(d, -20.0, 20.0)) : (d < 0 ? -20 : 20);
+    };
     int ndigit;
     if (l.relative) {
-      ndigit = std::max(-static_cast<int>(std::log10(std::fabs(l.tolerance))) + 2, 2);
+      ndigit = std::max(-digitsOf(l.tolerance) + 2, 2);
     } else {
-      ndigit = l.tolerance != 0 ? -static_cast<int>(std::log10(std::fabs(l.tolerance))) : 10;
-      if (l.computed != 0) ndigit += static_cast<int>(std::log10(std::fabs(l.computed)));
+      ndigit = l.tolerance != 0 ? -digitsOf(l.tolerance) : 10;
+      if (l.computed != 0 && !std::isnan(l.computed)) ndigit += digitsOf(l.computed);
       ndigit = std::max(ndigit, 2);
     }
     if (l.reference == "NON_REGRESSION") ndigit = std::max(12, ndigit);

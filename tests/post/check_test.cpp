@@ -280,3 +280,15 @@ TEST(CheckFunction, RulesAndLayout) {
   a.valeCalc = {2.0};
   EXPECT_EQ(checkFunctionValue(-2.0, a)[0].diag, Diag::Ok);
 }
+
+TEST(CheckFunction, ZeroToleranceAndNotANumberStillPrint) {
+  CheckSpec s = calc(0.5);
+  s.toleMachine = 0.0;
+  auto lines = checkFunctionValue(0.5, s);
+  EXPECT_EQ(lines[0].diag, Diag::Ok);  // |0| <= 0
+  EXPECT_NE(formatFunctionLines(lines, "XXXX").find(" OK   NON_REGRESSION   XXXX             0.50000000000000000"),
+            std::string::npos);
+  lines = checkFunctionValue(std::nan(""), calc(0.5));
+  EXPECT_EQ(lines[0].diag, Diag::Nook);
+  EXPECT_NE(formatFunctionLines(lines, "XXXX").find("NOOK  NON_REGRESSION"), std::string::npos);
+}
