@@ -1,5 +1,5 @@
 -- expect-exit: 1
--- expect-output: SKIP  NON_REGRESSION.*NOOK  NON_REGRESSION.*<I> checks: 17 OK, 1 NOOK
+-- expect-output: SKIP  NON_REGRESSION.*NOOK  NON_REGRESSION.*<I> checks: 18 OK, 1 NOOK
 -- The .resu layout of every kind of check, on values exact in binary (0.5, -0.25,
 -- sums of them; SOMM_ABS of S: 2 cells x 4 Gauss points x (2 + 0.5) = 20), compared line by line with resu_layout.expected (written by hand
 -- from code_aster's layout: tests/program/CMakeLists.txt runs the comparison).
@@ -36,6 +36,9 @@ T = CREA_TABLE{LISTE = {{PARA = 'NOM', LISTE_K = {'A', 'B'}}, {PARA = 'N', LISTE
 TEST_TABLE{TABLE = T, NOM_PARA = 'V', FILTRE = {NOM_PARA = 'NOM', VALE_K = 'B'}, VALE_CALC = 0.75}
 TEST_TABLE{TABLE = T, NOM_PARA = 'N', TYPE_TEST = 'SOMM', VALE_CALC_I = 7}
 TEST_TABLE{TABLE = T, NOM_PARA = 'NOM', FILTRE = {NOM_PARA = 'N', VALE_I = 3}, VALE_CALC_K = 'A'}
+-- Texts compare without trailing blanks, as Fortran compares them.
+TEST_TABLE{TABLE = T, NOM_PARA = 'NOM', FILTRE = {NOM_PARA = 'N', VALE_I = 4}, VALE_CALC_K = 'B  ', REFERENCE = 'AUTRE_ASTER',
+           VALE_REFE_K = 'B'}
 F = FORMULE{VALE = 'X/4', NOM_PARA = 'X'}
 TEST_FONCTION{VALEUR = {FONCTION = F, NOM_PARA = 'X', VALE_PARA = 2.0, VALE_CALC = 0.5,
                         REFERENCE = 'ANALYTIQUE', VALE_REFE = 0.5}}
