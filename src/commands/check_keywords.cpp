@@ -1,6 +1,5 @@
 #include "commands/check_keywords.hpp"
 
-#include <cfloat>
 #include <cmath>
 
 #include "core/atomic_write.hpp"
