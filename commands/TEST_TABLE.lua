@@ -7,4 +7,6 @@ return PROC{ nom = 'TEST_TABLE',
         fr = "Over the remaining rows: sum of absolute values, sum, largest or smallest value." },
   C_FILTRE(),
   C_TEST_REFERENCE{'R', 'I', 'K'},
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2},
+        fr = "Verbosity of code_aster's listing: accepted and ignored (the checks and their output are the same)." },
 }

@@ -140,7 +140,7 @@ for _, cell in ipairs({'TRIA3', 'TRIA6', 'QUAD4', 'QUAD8', 'QUAD9'}) do
        VALE_CALC = sieq.TRESCA, REFERENCE = 'ANALYTIQUE', VALE_REFE = sieq.TRESCA, PRECISION = 1e-10},
       {CHAM_GD = G, MAILLE = 'M1', POINT = 1, SOUS_POINT = 1, NOM_CMP = 'EPZZ',
        VALE_CALC = eps.EPZZ, REFERENCE = 'ANALYTIQUE', VALE_REFE = eps.EPZZ, PRECISION = 1e-10,
-       CRITERE = eps.EPZZ == 0 and 'ABSOLU' or 'RELATIF'},
+       CRITERE = eps.EPZZ == 0 and 'ABSOLU' or 'RELATIF', ORDRE_GRANDEUR = eps.EPZZ == 0 and 1.0 or nil},
     }}
     DETRUIRE{CONCEPT = {NOM = {C, G}}}
   end

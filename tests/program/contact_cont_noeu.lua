@@ -29,7 +29,7 @@ end
 local function exact(R, group, cmp, value)
   if value == 0 then
     TEST_RESU{RESU = {RESULTAT = R, INST = 1.0, NOM_CHAM = 'CONT_NOEU', GROUP_NO = group, NOM_CMP = cmp,
-                      VALE_CALC = 0.0, CRITERE = 'ABSOLU', TOLE_MACHINE = 1e-12,
+                      VALE_CALC = 0.0, CRITERE = 'ABSOLU', TOLE_MACHINE = 1e-12, ORDRE_GRANDEUR = 1.0,
                       REFERENCE = 'ANALYTIQUE', VALE_REFE = 0.0, PRECISION = 1e-12}}
   else
     TEST_RESU{RESU = {RESULTAT = R, INST = 1.0, NOM_CHAM = 'CONT_NOEU', GROUP_NO = group, NOM_CMP = cmp,

@@ -35,6 +35,7 @@ for k, cell in ipairs({'tria3', 'tria6', 'quad4', 'quad8'}) do
       local t = {NOM_CMP = cmp, TYPE_TEST = test, REFERENCE = 'ANALYTIQUE', VALE_REFE = value, LEGENDE = what}
       if value == 0 then
         t.VALE_CALC, t.CRITERE, t.TOLE_MACHINE, t.PRECISION = 0.0, 'ABSOLU', tolerance, tolerance
+        t.ORDRE_GRANDEUR = 1.0  -- a zero VALE_CALC: the absolute tolerance's scale
       else
         t.VALE_CALC, t.PRECISION = value, 1.0E-9
       end

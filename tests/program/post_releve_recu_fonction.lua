@@ -42,7 +42,7 @@ for _, t in ipairs({0.25, 0.5, 1.0}) do
   local at = {NOM_PARA = 'INST', VALE = t}
   TEST_TABLE{TABLE = REAC, NOM_PARA = 'DX', FILTRE = at, VALE_CALC = -SX * t, REFERENCE = 'ANALYTIQUE',
              VALE_REFE = -SX * t, PRECISION = 1e-10}
-  TEST_TABLE{TABLE = REAC, NOM_PARA = 'DY', FILTRE = at, VALE_CALC = 0.0, REFERENCE = 'ANALYTIQUE',
+  TEST_TABLE{TABLE = REAC, NOM_PARA = 'DY', FILTRE = at, VALE_CALC = 0.0, ORDRE_GRANDEUR = 1.0, REFERENCE = 'ANALYTIQUE',
              VALE_REFE = 0.0, CRITERE = 'ABSOLU', PRECISION = 1e-10}
   TEST_TABLE{TABLE = REAC, NOM_PARA = 'DRZ', FILTRE = at, VALE_CALC = SX * t / 2, REFERENCE = 'ANALYTIQUE',
              VALE_REFE = SX * t / 2, PRECISION = 1e-10}
@@ -55,7 +55,8 @@ MOY = POST_RELEVE_T{ACTION = {OPERATION = 'MOYENNE', INTITULE = 'DX_BAS', RESULT
 for _, t in ipairs({0.5, 1.0}) do
   local function check(q, v)
     TEST_TABLE{TABLE = MOY, NOM_PARA = 'DX', FILTRE = {{NOM_PARA = 'INST', VALE = t}, {NOM_PARA = 'QUANTITE', VALE_K = q}},
-               VALE_CALC = v, REFERENCE = 'ANALYTIQUE', VALE_REFE = v, CRITERE = 'ABSOLU', PRECISION = 1e-12}
+               VALE_CALC = v, ORDRE_GRANDEUR = v == 0 and 1.0 or nil, REFERENCE = 'ANALYTIQUE', VALE_REFE = v,
+               CRITERE = 'ABSOLU', PRECISION = 1e-12}
   end
   check('MOMENT_0', 2 * a(t))
   check('MOMENT_1', 4 * a(t))
@@ -75,7 +76,7 @@ local expected = {X = {MOMENT_0 = 0.75, MOMENT_1 = 1.0, MINIMUM = 0.0, MAXIMUM =
 for cmp, values in pairs(expected) do
   for q, v in pairs(values) do
     TEST_TABLE{TABLE = CHEM, NOM_PARA = cmp, FILTRE = {NOM_PARA = 'QUANTITE', VALE_K = q}, VALE_CALC = v,
-               REFERENCE = 'ANALYTIQUE', VALE_REFE = v, CRITERE = 'ABSOLU', PRECISION = 1e-14}
+               ORDRE_GRANDEUR = v == 0 and 1.0 or nil, REFERENCE = 'ANALYTIQUE', VALE_REFE = v, CRITERE = 'ABSOLU', PRECISION = 1e-14}
   end
 end
 
