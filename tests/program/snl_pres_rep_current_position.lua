@@ -27,7 +27,7 @@ for _, p in ipairs({PFORM, PTAB}) do
                                     INST = 1.0, TOUT = 'OUI', RESULTANTE = {'DX', 'DY'}}}
   TEST_TABLE{TABLE = T, NOM_PARA = 'DY', VALE_CALC = c * (1 + 2 * a) / 2, VALE_REFE = c * (1 + 2 * a) / 2,
              REFERENCE = 'ANALYTIQUE', PRECISION = 1e-12}
-  TEST_TABLE{TABLE = T, NOM_PARA = 'DX', VALE_CALC = 0.0, VALE_REFE = 0.0, REFERENCE = 'ANALYTIQUE',
+  TEST_TABLE{TABLE = T, NOM_PARA = 'DX', VALE_CALC = 0.0, ORDRE_GRANDEUR = 1.0, VALE_REFE = 0.0, REFERENCE = 'ANALYTIQUE',
              CRITERE = 'ABSOLU', PRECISION = 1e-12}
 end
 print('PRES_REP of XF: every check passed')
