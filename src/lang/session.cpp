@@ -38,6 +38,10 @@ std::filesystem::path Session::resuPath() const {
   return outputDir / (studyPath.stem().string() + ".resu");
 }
 
+std::filesystem::path Session::checksPath() const {
+  return outputDir / (studyPath.stem().string() + ".checks");
+}
+
 void Session::writeFile(const std::filesystem::path& target,
                         const std::function<void(const std::filesystem::path&)>& write) {
   if (!studyPath.empty()) files.addInput(studyPath, "the study file");
@@ -75,6 +79,10 @@ void Session::recordCheck(const std::string& block, bool ok) {
   const auto path = outputFile(resuPath().filename().string());
   if (!studyPath.empty()) files.addInput(studyPath, "the study file");
   appendAtomically(path, block, checksOk + checksNook > 1 && files.written(path), &files);
+  // One line a check, for programs (tools/astest): its verdict and where the study made it.
+  const auto list = outputFile(checksPath().filename().string());
+  appendAtomically(list, std::string(ok ? "OK" : "NOOK") + "\t" + where + "\n",
+                   checksOk + checksNook > 1 && files.written(list), &files);
 }
 
 std::string Session::recordCheckSummary() {
