@@ -1221,17 +1221,6 @@ int Interpreter::runFile(const std::string& path) {
   return runString(text.str(), "@" + path);
 }
 
-int Interpreter::runFiles(const std::vector<std::string>& paths) {
-  int status = 0;
-  for (std::size_t i = 0; i < paths.size() && status == 0; ++i) {
-    session_.continuesEarlierFile = i > 0;
-    moreFilesFollow_ = i + 1 < paths.size();
-    status = runFile(paths[i]);
-  }
-  moreFilesFollow_ = false;
-  return status;
-}
-
 // DEBUT and FIN are optional, as the catalogue of issue 2 wants: a study may
 // end with its last command.
 int Interpreter::runString(const std::string& code, const std::string& chunkName) {
@@ -1310,6 +1299,17 @@ int Interpreter::runString(const std::string& code, const std::string& chunkName
   std::fflush(stderr);
   if (st.stop == State::Stop::Interrupt) return finish(kInterruptedStatus);
   return finish(!message.empty() || caughtCount > 0 ? 2 : 0);
+}
+
+int Interpreter::runFiles(const std::vector<std::string>& paths) {
+  int status = 0;
+  for (std::size_t i = 0; i < paths.size() && status == 0; ++i) {
+    session_.continuesEarlierFile = i > 0;
+    moreFilesFollow_ = i + 1 < paths.size();
+    status = runFile(paths[i]);
+  }
+  moreFilesFollow_ = false;
+  return status;
 }
 
 int Interpreter::finish(int status) {
