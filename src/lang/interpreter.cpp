@@ -1306,6 +1306,11 @@ int Interpreter::runFiles(const std::vector<std::string>& paths) {
   for (std::size_t i = 0; i < paths.size() && status == 0; ++i) {
     session_.continuesEarlierFile = i > 0;
     moreFilesFollow_ = i + 1 < paths.size();
+    if (i > 0 && !std::ifstream(paths[i])) {  // the run still ends with the summary of what ran
+      Messages::emit(Severity::Fatal, "aster-lite", "cannot open the study file " + paths[i]);
+      moreFilesFollow_ = false;
+      return finish(2);
+    }
     status = runFile(paths[i]);
   }
   moreFilesFollow_ = false;
