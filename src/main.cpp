@@ -7,11 +7,14 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "lang/catalogue.hpp"
+#include "core/export_file.hpp"
 #include "lang/docgen.hpp"
+#include "lang/export_run.hpp"
 #include "lang/interpreter.hpp"
 #include "lang/session.hpp"
 #include "linalg/blas_info.hpp"
@@ -20,14 +23,20 @@
 namespace {
 
 const char* kUsage =
-    "usage: aster-lite [options] STUDY.lua\n"
+    "usage: aster-lite [options] STUDY.lua [PART2.lua ...]\n"
+    "       aster-lite [options] TEST.export\n"
     "\n"
-    "Runs a study file written in Lua with code_aster's commands.\n"
+    "Runs a study file written in Lua with code_aster's commands. Several study\n"
+    "files run in order in one study, each continuing the one before (POURSUITE).\n"
+    "A code_aster .export runs its command files so, with its data files bound to\n"
+    "their units and its result files written where it lists them (paths from the\n"
+    ".export's folder; output folder: the .export's name beside it).\n"
     "\n"
     "options:\n"
     "  --output-dir DIR  where results, tables and plots go\n"
     "                    (default: a folder named after the study, next to it)\n"
-    "  -u N=PATH         bind file PATH to logical unit N (as DEFI_FICHIER does)\n"
+    "  -u N=PATH         bind file PATH to logical unit N (as DEFI_FICHIER does;\n"
+    "                    it overrides the .export's unit N)\n"
     "  --quiet           print only alarms, errors and check results\n"
     "  --unsafe-lua      lift the Lua sandbox: give the study plain Lua (os.execute,\n"
     "                    io.popen, the debug library, binary chunks, C modules, files\n"
@@ -57,7 +66,8 @@ int main(int argc, char** argv) {
   }
   namespace fs = std::filesystem;
   aster::lang::Session session;
-  std::string study, outputDir;
+  std::vector<std::string> studies;
+  std::string outputDir;
   bool quiet = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -99,18 +109,20 @@ int main(int argc, char** argv) {
         return 0;
       } else if (!a.empty() && a[0] == '-') {
         return usageError("unknown option " + a);
-      } else if (study.empty()) {
-        study = a;
       } else {
-        return usageError("one study at a time: got " + study + " and " + a);
+        studies.push_back(a);
       }
     } catch (const std::exception& e) {
       return usageError(e.what());
     }
   }
-  if (study.empty()) return usageError("no study file given");
-  if (!fs::exists(study)) return usageError("the study file " + study + " does not exist");
-  {
+  if (studies.empty()) return usageError("no study file given");
+  const bool isExport = fs::path(studies.front()).extension() == ".export";
+  for (const auto& file : studies)
+    if (fs::path(file).extension() == ".export" && studies.size() > 1)
+      return usageError("an .export is run alone: got " + studies.front() + " and " + studies.back());
+  for (const auto& study : studies) {
+    if (!fs::exists(study)) return usageError("the study file " + study + " does not exist");
     // A directory would read as an empty study (exit 0, nothing done), a FIFO
     // would block: only a regular file (or a link to one) is a study.
     std::error_code ec;
@@ -128,11 +140,26 @@ int main(int argc, char** argv) {
 
   aster::Messages::setQuiet(quiet);
   aster::interrupt::install();
-  session.studyPath = study;
-  session.outputDir = outputDir.empty() ? fs::path(study).replace_extension("") : fs::path(outputDir);
+  const std::string& first = studies.front();
+  session.studyPath = first;
+  session.outputDir = outputDir.empty() ? fs::path(first).replace_extension("") : fs::path(outputDir);
   try {
+    aster::ExportFile exportFile;
+    if (isExport) {
+      exportFile = aster::readExportFile(first);
+      studies = aster::lang::prepareExportRun(exportFile, session);
+    }
+    for (const auto& study : studies) session.files.addInput(study, "a study file");
     aster::lang::Interpreter interpreter(session);
-    return interpreter.runFile(study);
+    int status = interpreter.runFiles(studies);
+    if (isExport && status != aster::lang::kInterruptedStatus) {
+      std::fflush(stdout);
+      for (const auto& failure : aster::lang::writeExportResults(exportFile, session)) {
+        std::fprintf(stderr, "%s\n", failure.c_str());
+        if (failure.rfind("<F>", 0) == 0) status = 2;
+      }
+    }
+    return status;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "<F> <aster-lite> %s\n", e.what());
     return 2;

@@ -834,6 +834,8 @@ std::string writeRefusal(const State& st, const std::string& path, fs::path& tar
   if (fs::is_regular_file(status) && fs::hard_link_count(target, ec) > 1)
     return target.string() + " has other hard links (names that may lie outside the output folder)";
   if (resolved(st.session->studyPath) == target) return target.string() + " is the study file itself";
+  if (const std::string how = st.session->files.inputOf(target); !how.empty())
+    return target.string() + " is an input of the study (" + how + ")";
   for (const auto& [unit, file] : st.session->units)
     if (resolved(file) == target)
       return target.string() + " is bound to unit " + std::to_string(unit) + " (the commands read and write it)";
@@ -1299,7 +1301,24 @@ int Interpreter::runString(const std::string& code, const std::string& chunkName
   return finish(!message.empty() || caughtCount > 0 ? 2 : 0);
 }
 
+int Interpreter::runFiles(const std::vector<std::string>& paths) {
+  int status = 0;
+  for (std::size_t i = 0; i < paths.size() && status == 0; ++i) {
+    session_.continuesEarlierFile = i > 0;
+    moreFilesFollow_ = i + 1 < paths.size();
+    if (i > 0 && !std::ifstream(paths[i])) {  // the run still ends with the summary of what ran
+      Messages::emit(Severity::Fatal, "aster-lite", "cannot open the study file " + paths[i]);
+      moreFilesFollow_ = false;
+      return finish(2);
+    }
+    status = runFile(paths[i]);
+  }
+  moreFilesFollow_ = false;
+  return status;
+}
+
 int Interpreter::finish(int status) {
+  if (moreFilesFollow_ && status == 0) return 0;  // the run ends with its last file
   if (!session_.plots.empty() && session_.drawPlots) {
     const auto failures = session_.drawPlots(session_.plots);
     session_.plots.clear();

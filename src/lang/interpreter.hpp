@@ -3,6 +3,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "lang/session.hpp"
 
@@ -21,6 +22,9 @@ class Interpreter {
   // Exit status as the program returns it: 0 all checks OK, 1 a check NOOK, 2 fatal
   // error, kInterruptedStatus after Ctrl-C. DEBUT and FIN may be omitted.
   int runFile(const std::string& path);
+  // Runs the files in order, each continuing the one before (POURSUITE): FIN
+  // ends one file, the first failure ends the run, the checks cover them all.
+  int runFiles(const std::vector<std::string>& paths);
   int runString(const std::string& code, const std::string& chunkName);
 
   struct State;
@@ -28,6 +32,7 @@ class Interpreter {
  private:
   int finish(int status);
   std::unique_ptr<State> state_;
+  bool moreFilesFollow_ = false;  // runFiles: the run goes on after this file
   Session& session_;
 };
 

@@ -15,7 +15,10 @@
 namespace aster::lang {
 
 struct Session {
-  std::filesystem::path studyPath;  // as given on the command line
+  std::filesystem::path studyPath;  // as given on the command line (the .export for a test)
+  // The study file being run continues one run before it in this run (several
+  // study files, or an .export's command files): POURSUITE may be used.
+  bool continuesEarlierFile = false;
   std::filesystem::path outputDir;  // results, tables, plots
   std::map<int, std::filesystem::path> units;  // DEFI_FICHIER and -u N=path
   // The units the study itself bound (DEFI_FICHIER), not the command line (-u).
@@ -54,7 +57,8 @@ struct Session {
   // TEST_RESU and friends: counts, and the lines of <output-dir>/<study>.resu.
   int checksOk = 0;
   int checksNook = 0;
-  // Prints a check block, appends it to the .resu file, counts it.
+  // Prints a check block, appends it to the .resu file, counts it (the .checks
+  // records are written by the checks themselves: check_keywords.cpp).
   void recordCheck(const std::string& block, bool ok);
   // The closing line of the checks ("<I> checks: 3 OK, 0 NOOK"), printed and
   // appended to the .resu file at the end of the run; empty when there were none.

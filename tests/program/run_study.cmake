@@ -1,5 +1,6 @@
 # Runs EXE on STUDY; checks the exit status and output the study's header asks for.
 # PREFIX (optional, a list): a command that runs EXE (prlimit --as=...).
+# EXPECT_NO_OUTPUT (optional): a REGEX the output must not match.
 if(NOT DEFINED EXPECT_EXIT)
   file(STRINGS ${STUDY} header LIMIT_COUNT 5)
   foreach(line ${header})
@@ -18,6 +19,9 @@ if(NOT "${status}" STREQUAL "${EXPECT_EXIT}")
 endif()
 if(DEFINED EXPECT_OUTPUT AND NOT "${out}${err}" MATCHES "${EXPECT_OUTPUT}")
   message(FATAL_ERROR "output does not match: ${EXPECT_OUTPUT}")
+endif()
+if(DEFINED EXPECT_NO_OUTPUT AND "${out}${err}" MATCHES "${EXPECT_NO_OUTPUT}")
+  message(FATAL_ERROR "output matches what it must not: ${EXPECT_NO_OUTPUT}")
 endif()
 if("${out}${err}" MATCHES "runtime error:|AddressSanitizer|LeakSanitizer")
   message(FATAL_ERROR "sanitizer report")
