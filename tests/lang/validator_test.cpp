@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lang/catalogue.hpp"
+#include "lang/docgen.hpp"
 #include "lang/validator.hpp"
 
 using namespace aster;
@@ -428,4 +429,67 @@ return OPER{ nom = 'MAUVAIS', sd_prod = 'formule', SIMP{ 'C', typ = 'R' }, autre
                Error);
   EXPECT_THROW(Catalogue::fromSources({{"MAUVAIS", R"(
 return OPER{ nom = 'MAUVAIS', sd_prod = 'formule', autres_mots_cles = { 'C' } })"}}), Error);
+}
+
+// An accepted-and-ignored keyword (ignored = "reason"): checked as declared,
+// then absent from the tree the operator reads, defaults included.
+const char* kIgnore = R"(
+return PROC{ nom = 'IGNORE',
+  SIMP{ 'PAR_LOT', typ = 'TXM', defaut = 'NON', into = {'OUI', 'NON'}, ignored = "runs command by command." },
+  FACT{ 'DEBUG', ignored = "developers' checks of code_aster.",
+    SIMP{ 'SDVERI', typ = 'TXM', into = {'OUI', 'NON'} },
+  },
+  SIMP{ 'GARDE', typ = 'I', defaut = 3 },
+}
+)";
+
+TEST(Validator, IgnoredKeywordsAreCheckedThenDropped) {
+  static const Catalogue cat = Catalogue::fromSources({{"IGNORE", kIgnore}});
+  const CommandSpec& spec = *cat.find("IGNORE");
+  Keywords call;
+  call.setSimple("PAR_LOT", {Value::ofText("OUI")});
+  Keywords debug;
+  debug.setSimple("SDVERI", {Value::ofText("OUI")});
+  call.setFactor("DEBUG", {debug});
+  const Keywords out = validate(spec, call);
+  EXPECT_FALSE(out.has("PAR_LOT"));
+  EXPECT_FALSE(out.has("DEBUG"));
+  EXPECT_EQ(out.integer("GARDE"), 3);
+  EXPECT_FALSE(validate(spec, Keywords{}).has("PAR_LOT"));  // nor its default
+
+  Keywords misspelt;
+  misspelt.setSimple("PAR_LOT", {Value::ofText("OUII")});
+  EXPECT_THROW(validate(spec, misspelt), ValidationError);
+  Keywords inside;
+  Keywords badDebug;
+  badDebug.setSimple("SDVERI", {Value::ofText("PEUT-ETRE")});
+  inside.setFactor("DEBUG", {badDebug});
+  try {
+    validate(spec, inside);
+    FAIL() << "accepted";
+  } catch (const ValidationError& e) {
+    EXPECT_EQ(e.keyword, "DEBUG/SDVERI");
+  }
+}
+
+TEST(Catalogue, IgnoredNeedsAReasonAndAnOptionalKeyword) {
+  for (const char* bad : {"return PROC{ nom = 'MAUVAIS', SIMP{ 'A', typ = 'TXM', ignored = '' } }",
+                          "return PROC{ nom = 'MAUVAIS', SIMP{ 'A', typ = 'TXM', ignored = true } }",
+                          "return PROC{ nom = 'MAUVAIS', SIMP{ 'A', statut = 'o', typ = 'TXM', ignored = 'x' } }",
+                          "return PROC{ nom = 'MAUVAIS', BLOC{ 'b', condition = { A = true }, ignored = 'x' } }"})
+    EXPECT_THROW(Catalogue::fromSources({{"MAUVAIS", bad}}), Error) << bad;
+}
+
+TEST(Docgen, MarksIgnoredKeywordsWithTheirReason) {
+  static const Catalogue cat = Catalogue::fromSources({{"IGNORE", kIgnore}});
+  const std::string doc = commandReference(cat);
+  EXPECT_NE(doc.find("- `PAR_LOT` — optional, a text; default 'NON'; one of 'OUI', 'NON'. Accepted and ignored: runs "
+                     "command by command.\n"),
+            std::string::npos)
+      << doc;
+  EXPECT_NE(doc.find("- `DEBUG` — factor keyword, optional, 0..1 occurrences. Accepted and ignored: developers' checks "
+                     "of code_aster.\n"),
+            std::string::npos)
+      << doc;
+  EXPECT_EQ(doc.find("`GARDE` — optional, an integer; default 3. Accepted"), std::string::npos);
 }
