@@ -27,6 +27,8 @@ return OPER{ nom = 'CALC_CHAMP', sd_prod = {'evol_elas', 'evol_noli'}, reentrant
         fr = "Nodal forces and reactions (as the analysis stored them with each instant)." },
   SIMP{ 'VARI_INTERNE', typ = 'TXM', max = '**', into = {'VARI_ELNO', 'VARI_NOEU'},
         fr = "Internal variables at cell nodes and nodes, from VARI_ELGA." },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
-  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
+  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the concept.",
+        ignored = "the title of a concept is printed nowhere in aster-lite." },
 }

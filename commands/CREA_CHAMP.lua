@@ -94,5 +94,6 @@ return OPER{ nom = 'CREA_CHAMP', sd_prod = {'cham_no_sdaster', 'cham_elem'}, ree
   },
 
   SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity: 2 prints the field." },
-  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title." },
+  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the concept.",
+        ignored = "the title of a concept is printed nowhere in aster-lite." },
 }

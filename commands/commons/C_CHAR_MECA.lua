@@ -65,6 +65,7 @@ function C_CHAR_MECA(V)
     },
     SIMP{ 'VERI_NORM', typ = 'TXM', defaut = 'OUI', into = {'OUI', 'NON'},
           fr = "OUI: every PRES_REP edge must have its normal pointing out of the 2D cell it bounds (fatal error otherwise: orient them with MODI_MAILLAGE ORIE_PEAU); NON: no check, the sign of the pressure follows each edge's own normal." },
-    SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+    SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
   }
 end

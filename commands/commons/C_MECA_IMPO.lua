@@ -12,6 +12,7 @@ function C_MECA_IMPO(V)
       SIMP{ 'DX', typ = V, fr = "Imposed displacement along X." },
       SIMP{ 'DY', typ = V, fr = "Imposed displacement along Y." },
     },
-    SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+    SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
   }
 end
