@@ -1,7 +1,7 @@
 -- CALC_CHAMP: fields derived from a result, by option group as in code_aster.
 return OPER{ nom = 'CALC_CHAMP', sd_prod = {'evol_elas', 'evol_noli'}, reentrant = 'f',
   fr = "Computes fields on cells (ELGA, ELNO) and at nodes (NOEU) from a result, at its instants; reuse= completes the result itself.",
-  regles = { EXCLUS('TOUT_ORDRE', 'NUME_ORDRE', 'INST', 'LIST_INST'), EXCLUS('TOUT', 'GROUP_MA'),
+  regles = { EXCLUS('TOUT_ORDRE', 'NUME_ORDRE', 'INST', 'LIST_INST'), PRESENT_ABSENT('TOUT', 'GROUP_MA', 'MAILLE'),
              AU_MOINS_UN('CONTRAINTE', 'DEFORMATION', 'CRITERES', 'FORCE', 'VARI_INTERNE') },
   SIMP{ 'RESULTAT', statut = 'o', typ = {'evol_elas', 'evol_noli'}, fr = "The result the fields are computed from." },
   SIMP{ 'MODELE', typ = 'modele_sdaster', fr = "The model (default: the result's)." },
@@ -15,6 +15,7 @@ return OPER{ nom = 'CALC_CHAMP', sd_prod = {'evol_elas', 'evol_noli'}, reentrant
   SIMP{ 'TOUT', typ = 'TXM', into = {'OUI'}, fr = "Every cell of the model (the default)." },
   SIMP{ 'GROUP_MA', typ = 'grma', max = '**',
         fr = "Only the cells of these groups: fields on cells there, nodal fields averaged over them." },
+  SIMP{ 'MAILLE', typ = 'ma', max = '**', fr = "Only these cells, by name (as GROUP_MA)." },
   SIMP{ 'CONTRAINTE', typ = 'TXM', max = '**',
         into = {'SIEF_ELGA', 'SIEF_ELNO', 'SIEF_NOEU', 'SIGM_ELGA', 'SIGM_ELNO', 'SIGM_NOEU'},
         fr = "Stresses (SIXX, SIYY, SIZZ, SIXY) at Gauss points, cell nodes (extrapolated) and nodes (mean over the cells)." },

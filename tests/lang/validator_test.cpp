@@ -493,3 +493,23 @@ TEST(Docgen, MarksIgnoredKeywordsWithTheirReason) {
       << doc;
   EXPECT_EQ(doc.find("`GARDE` — optional, an integer; default 3. Accepted"), std::string::npos);
 }
+
+// The built-in catalogue: code_aster's DEBUT options are accepted, ignored and say why.
+TEST(Docgen, BuiltinReferenceMarksDebutOptionsIgnored) {
+  const std::string doc = commandReference(Catalogue::builtin());
+  const auto debut = doc.find("\n## DEBUT\n");
+  ASSERT_NE(debut, std::string::npos);
+  const std::string section = doc.substr(debut, doc.find("\n## ", debut + 1) - debut);
+  for (const char* key : {"`PAR_LOT`", "`DEBUG`", "`IGNORE_ALARM`", "`ERREUR`", "`MESURE_TEMPS`", "`CODE`"}) {
+    const auto at = section.find(key);
+    ASSERT_NE(at, std::string::npos) << key;
+    const std::string line = section.substr(at, section.find('\n', at) - at);
+    EXPECT_NE(line.find("Accepted and ignored: "), std::string::npos) << line;
+  }
+  const CommandSpec& spec = *Catalogue::builtin().find("DEBUT");
+  Keywords call, debug;
+  debug.setSimple("SDVERI", {Value::ofText("OUI")});
+  call.setFactor("DEBUG", {debug});
+  call.setSimple("IGNORE_ALARM", {Value::ofText("MODELE1_63"), Value::ofText("SUPERVIS_1")});
+  EXPECT_TRUE(validate(spec, call).keys().empty());  // nothing reaches the operator
+}
