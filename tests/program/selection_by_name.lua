@@ -74,7 +74,7 @@ assert(differs, 'GROT_GDEP gives the small-strain solution: COMPORTEMENT by MAIL
 -- SIGM_ELNO on M1 and M2 only (CALC_CHAMP MAILLE): the uniform stress there.
 TAB = POST_RELEVE_T{ACTION = {OPERATION = 'EXTRACTION', INTITULE = 'S', RESULTAT = RS1, NOM_CHAM = 'SIGM_ELNO',
                               INST = 1.0, NOM_CMP = {'SIXX', 'SIYY'}, NOEUD = {'N1', 'N7'}, MAILLE = 'M1',
-                              MOYE_NOEUD = 'NON'}}
+                              MOYE_NOEUD = 'NON', REPERE = 'GLOBAL'}}
 local sixx, siyy = TAB:column('SIXX'), TAB:column('SIYY')
 assert(#sixx == 2, 'two rows (N1 and N7 of M1), got ' .. #sixx)
 for i = 1, 2 do
