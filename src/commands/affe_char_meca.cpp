@@ -213,7 +213,8 @@ void readFaceImpo(const model::Model& m, const Session& session, const Keywords&
       }
     }
   }
-  if (nodes.empty()) throw Error(occ.path + ": every node is left out by SANS_GROUP_NO, SANS_NOEUD, SANS_GROUP_MA or SANS_MAILLE");
+  if (nodes.empty())
+    throw Error(occ.path + ": every node is left out by SANS_GROUP_NO, SANS_NOEUD, SANS_GROUP_MA or SANS_MAILLE");
   readImposedAt(occ, nodes, load);
   for (const char* key : {"DNOR", "DTAN"}) {
     if (!occ.has(key)) continue;
@@ -253,7 +254,8 @@ void checkOutwardNormals(const mesh::Mesh& mesh, const Keywords& occ, const std:
   std::string groups;
   for (const auto& g : occ.texts("GROUP_MA")) groups += (groups.empty() ? "'" : ", '") + g + "'";
   throw Error(occ.path + (group.empty() ? "/MAILLE" : "/GROUP_MA") + ": the normal of cell " + mesh.cellName(s) +
-              (group.empty() ? "" : " (group " + group + ")") + " points into the cell " + mesh.cellName(inward.front().cell) + " it bounds" +
+              (group.empty() ? "" : " (group " + group + ")") + " points into the cell " +
+              mesh.cellName(inward.front().cell) + " it bounds" +
               (inward.size() > 1 ? " (" + std::to_string(inward.size()) + " of the " + std::to_string(cells.size()) +
                                        " edges are reversed)"
                                  : std::string()) +

@@ -410,8 +410,8 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
       throw Error((occs.size() > 1 ? "RESU[" + std::to_string(i + 1) + "]: " : std::string("RESU: ")) + what);
     }
     if (!text && (occs[i].has("GROUP_MA") || occs[i].has("GROUP_NO") || occs[i].has("MAILLE") || occs[i].has("NOEUD")))
-      Messages::alarm("IMPR_RESU", "GROUP_MA / MAILLE / GROUP_NO / NOEUD restrict FORMAT='RESULTAT' only; FORMAT='" + format +
-                                       "' writes the whole mesh");
+      Messages::alarm("IMPR_RESU", "GROUP_MA / MAILLE / GROUP_NO / NOEUD restrict FORMAT='RESULTAT' only; FORMAT='" +
+                                       format + "' writes the whole mesh");
   }
 
   Merged merged;
