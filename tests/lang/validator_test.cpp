@@ -513,3 +513,22 @@ TEST(Docgen, BuiltinReferenceMarksDebutOptionsIgnored) {
   call.setSimple("IGNORE_ALARM", {Value::ofText("MODELE1_63"), Value::ofText("SUPERVIS_1")});
   EXPECT_TRUE(validate(spec, call).keys().empty());  // nothing reaches the operator
 }
+
+// IMPR_RESU's TYPE_CHAM: only 'VECT_2D', what the GMSH writer does anyway with two
+// components, is accepted (and dropped); 'SCALAIRE' would ask for another file.
+TEST(Validator, ImprResuTypeChamOnlyTheWriterBehaviour) {
+  const CommandSpec& spec = *Catalogue::builtin().find("IMPR_RESU");
+  auto call = [](const char* typeCham) {
+    Keywords resu;
+    resu.setSimple("CHAM_GD", {Value::ofConcept(std::make_shared<FakeConcept>("cham_no_sdaster"))});
+    resu.setSimple("NOM_CMP", {Value::ofText("DX"), Value::ofText("DY")});
+    resu.setSimple("TYPE_CHAM", {Value::ofText(typeCham)});
+    Keywords k;
+    k.setSimple("FORMAT", {Value::ofText("GMSH")});
+    k.setFactor("RESU", {resu});
+    return k;
+  };
+  const Keywords out = validate(spec, call("VECT_2D"));
+  EXPECT_FALSE(out.factor("RESU").front().has("TYPE_CHAM"));
+  EXPECT_THROW(validate(spec, call("SCALAIRE")), ValidationError);
+}
