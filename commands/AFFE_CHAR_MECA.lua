@@ -9,6 +9,7 @@ return OPER{ nom = 'AFFE_CHAR_MECA', sd_prod = 'char_meca', reentrant = 'n',
     SIMP{ 'NOEUD', typ = 'no', max = '**', fr = "These nodes, by name." },
     SIMP{ 'GROUP_MA', typ = 'grma', max = '**', fr = "Nodes of the cells of these groups." },
     SIMP{ 'MAILLE', typ = 'ma', max = '**', fr = "Nodes of these cells, by name." },
+    C_SANS(),
     SIMP{ 'DIST_MIN', typ = 'R', fr = "Nodes closer than this to the first one count as coincident with it (default: 1e-10 of the set's size)." },
   },
 }

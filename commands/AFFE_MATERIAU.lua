@@ -10,5 +10,6 @@ return OPER{ nom = 'AFFE_MATERIAU', sd_prod = 'cham_mater', reentrant = 'n',
     SIMP{ 'MAILLE', typ = 'ma', max = '**', fr = "These cells, by name." },
     SIMP{ 'MATER', statut = 'o', typ = 'mater_sdaster', fr = "The material." },
   },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
 }

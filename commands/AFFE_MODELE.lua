@@ -14,5 +14,6 @@ return OPER{ nom = 'AFFE_MODELE', sd_prod = 'modele_sdaster', reentrant = 'n',
   },
   SIMP{ 'VERI_JACOBIEN', typ = 'TXM', defaut = 'OUI', into = {'OUI', 'NON'},
         fr = "OUI: a fatal error naming the cells whose Jacobian is not positive at every Gauss point (inverted: nodes clockwise; distorted: sign change; degenerate: zero), which the elements cannot integrate; NON: no check." },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
 }

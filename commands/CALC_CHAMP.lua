@@ -1,7 +1,7 @@
 -- CALC_CHAMP: fields derived from a result, by option group as in code_aster.
 return OPER{ nom = 'CALC_CHAMP', sd_prod = {'evol_elas', 'evol_noli'}, reentrant = 'f',
   fr = "Computes fields on cells (ELGA, ELNO) and at nodes (NOEU) from a result, at its instants; reuse= completes the result itself.",
-  regles = { EXCLUS('TOUT_ORDRE', 'NUME_ORDRE', 'INST', 'LIST_INST'), EXCLUS('TOUT', 'GROUP_MA'),
+  regles = { EXCLUS('TOUT_ORDRE', 'NUME_ORDRE', 'INST', 'LIST_INST'), PRESENT_ABSENT('TOUT', 'GROUP_MA', 'MAILLE'),
              AU_MOINS_UN('CONTRAINTE', 'DEFORMATION', 'CRITERES', 'FORCE', 'VARI_INTERNE') },
   SIMP{ 'RESULTAT', statut = 'o', typ = {'evol_elas', 'evol_noli'}, fr = "The result the fields are computed from." },
   SIMP{ 'MODELE', typ = 'modele_sdaster', fr = "The model (default: the result's)." },
@@ -15,6 +15,7 @@ return OPER{ nom = 'CALC_CHAMP', sd_prod = {'evol_elas', 'evol_noli'}, reentrant
   SIMP{ 'TOUT', typ = 'TXM', into = {'OUI'}, fr = "Every cell of the model (the default)." },
   SIMP{ 'GROUP_MA', typ = 'grma', max = '**',
         fr = "Only the cells of these groups: fields on cells there, nodal fields averaged over them." },
+  SIMP{ 'MAILLE', typ = 'ma', max = '**', fr = "Only these cells, by name (as GROUP_MA)." },
   SIMP{ 'CONTRAINTE', typ = 'TXM', max = '**',
         into = {'SIEF_ELGA', 'SIEF_ELNO', 'SIEF_NOEU', 'SIGM_ELGA', 'SIGM_ELNO', 'SIGM_NOEU'},
         fr = "Stresses (SIXX, SIYY, SIZZ, SIXY) at Gauss points, cell nodes (extrapolated) and nodes (mean over the cells)." },
@@ -27,6 +28,8 @@ return OPER{ nom = 'CALC_CHAMP', sd_prod = {'evol_elas', 'evol_noli'}, reentrant
         fr = "Nodal forces and reactions (as the analysis stored them with each instant)." },
   SIMP{ 'VARI_INTERNE', typ = 'TXM', max = '**', into = {'VARI_ELNO', 'VARI_NOEU'},
         fr = "Internal variables at cell nodes and nodes, from VARI_ELGA." },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
-  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
+  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the concept.",
+        ignored = "the title of a concept is printed nowhere in aster-lite." },
 }

@@ -8,6 +8,8 @@ return OPER{ nom = 'CALC_FONC_INTERP', sd_prod = 'fonction_sdaster', reentrant =
   SIMP{ 'NOM_PARA', typ = 'TXM', fr = "Name of the parameter (default: the function's)." },
   SIMP{ 'NOM_RESU', typ = 'TXM', defaut = 'TOUTRESU', fr = "Name of the result." },
   C_INTERPOL_PROL(),
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity: 2 prints the values." },
-  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
+  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the concept.",
+        ignored = "the title of a concept is printed nowhere in aster-lite." },
 }

@@ -25,7 +25,9 @@ local function pairing_keywords(zone)
           fr = "A point projecting past an end of the master by at most this (in the master cell's xi units, xi in [-1, 1]) is held at the end; farther, it is not paired." },
     SIMP{ 'SANS_GROUP_NO', typ = 'grno', max = '**',
           fr = "Slave nodes excluded from contact (e.g. also under Dirichlet conditions)." },
+    SIMP{ 'SANS_NOEUD', typ = 'no', max = '**', fr = "Slave nodes excluded from contact, by name." },
     SIMP{ 'SANS_GROUP_MA', typ = 'grma', max = '**', fr = "Cells whose nodes are excluded from contact." },
+    SIMP{ 'SANS_MAILLE', typ = 'ma', max = '**', fr = "Cells whose nodes are excluded from contact, by name." },
     SIMP{ 'RESOLUTION', typ = 'TXM', defaut = 'OUI', into = {'OUI'},
           fr = "Contact is solved (NON, the interpenetration check alone, is not available)." },
   }

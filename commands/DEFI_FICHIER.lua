@@ -20,5 +20,6 @@ return PROC{ nom = 'DEFI_FICHIER',
     SIMP{ 'UNITE', typ = 'I', val_min = 1, fr = "Logical unit to release." },
     SIMP{ 'FICHIER', typ = 'TXM', fr = "File whose units are released (every unit bound to it)." },
   },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
 }

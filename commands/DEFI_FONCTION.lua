@@ -14,6 +14,8 @@ return OPER{ nom = 'DEFI_FONCTION', sd_prod = 'fonction_sdaster', reentrant = 'n
   C_INTERPOL_PROL(),
   SIMP{ 'VERIF', typ = 'TXM', defaut = 'CROISSANT', into = {'CROISSANT', 'NON'},
         fr = "CROISSANT: check that the abscissas strictly increase." },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity: 2 prints the values." },
-  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
+  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the concept.",
+        ignored = "the title of a concept is printed nowhere in aster-lite." },
 }

@@ -19,5 +19,6 @@ return OPER{ nom = 'DEFI_LIST_INST', sd_prod = 'list_inst', reentrant = 'n',
       },
     },
   },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
 }

@@ -9,6 +9,8 @@ return OPER{ nom = 'DEFI_LIST_REEL', sd_prod = 'listr8_sdaster', reentrant = 'n'
     SIMP{ 'PAS', typ = 'R', fr = "Step size." },
   },
   SIMP{ 'VALE', typ = 'R', max = '**', fr = "The values, explicitly." },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity: 2 prints the list." },
-  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
+  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the concept.",
+        ignored = "the title of a concept is printed nowhere in aster-lite." },
 }

@@ -7,5 +7,6 @@ return OPER{ nom = 'DEFI_MATERIAU', sd_prod = 'mater_sdaster', reentrant = 'f',
     SIMP{ 'RHO', typ = 'R', val_min = 0.0, fr = "Density." },
     SIMP{ 'ALPHA', typ = 'R', fr = "Thermal expansion coefficient." },
   },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
 }

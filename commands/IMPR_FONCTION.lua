@@ -38,5 +38,6 @@ return PROC{ nom = 'IMPR_FONCTION',
   SIMP{ 'GRILLE_Y', typ = 'R', val_min = 0.0, fr = "Spacing of the Y grid lines." },
   SIMP{ 'PENTE', typ = 'TXM', defaut = 'NON', into = {'OUI', 'NON'},
         fr = "OUI: add to each curve's legend the least-squares slope of log y against log x (convergence rates)." },
-  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
 }

@@ -13,5 +13,6 @@ return OPER{ nom = 'MECA_STATIQUE', sd_prod = 'evol_elas', reentrant = 'n',
   C_SOLVEUR(),
   SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2},
         fr = "Verbosity: 1 prints a summary; 2 adds the linear solver's figures (ordering, factor size, flops)." },
-  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title." },
+  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the concept.",
+        ignored = "the title of a concept is printed nowhere in aster-lite." },
 }

@@ -24,4 +24,6 @@ return OPER{ nom = 'POST_ELEM', sd_prod = 'table_sdaster', reentrant = 'n',
     SIMP{ 'COEF_MULT', typ = 'R', max = '**', fr = "Weights of the components (one per component)." },
   },
   SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the table." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
 }

@@ -36,5 +36,6 @@ return OPER{ nom = 'RECU_FONCTION', sd_prod = 'fonction_sdaster', reentrant = 'n
   SIMP{ 'NOM_RESU', typ = 'TXM', fr = "Name of the function's result (default: PARA_Y, or NOM_CMP from a result)." },
   C_INTERPOL_PROL(),
   SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity: 2 prints the values." },
-  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title." },
+  SIMP{ 'TITRE', typ = 'TXM', max = '**', fr = "Title of the concept.",
+        ignored = "the title of a concept is printed nowhere in aster-lite." },
 }

@@ -4,14 +4,16 @@ function C_MECA_IMPO(V)
   return KEYWORDS{
     SIMP{ 'MODELE', statut = 'o', typ = 'modele_sdaster', fr = "The model." },
     FACT{ 'MECA_IMPO', statut = 'o', max = '**', fr = "Imposed displacement values.",
-      regles = { UN_PARMI('TOUT', 'GROUP_MA', 'GROUP_NO', 'NOEUD'), AU_MOINS_UN('DX', 'DY') },
+      regles = { UN_PARMI('TOUT', 'GROUP_MA', 'MAILLE', 'GROUP_NO', 'NOEUD'), AU_MOINS_UN('DX', 'DY') },
       SIMP{ 'TOUT', typ = 'TXM', into = {'OUI'}, fr = "Every node of the model." },
       SIMP{ 'GROUP_MA', typ = 'grma', max = '**', fr = "Nodes of the cells of these groups." },
+      SIMP{ 'MAILLE', typ = 'ma', max = '**', fr = "Nodes of these cells, by name." },
       SIMP{ 'GROUP_NO', typ = 'grno', max = '**', fr = "Nodes of these groups." },
       SIMP{ 'NOEUD', typ = 'no', max = '**', fr = "These nodes, by name." },
       SIMP{ 'DX', typ = V, fr = "Imposed displacement along X." },
       SIMP{ 'DY', typ = V, fr = "Imposed displacement along Y." },
     },
-    SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity." },
+    SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2}, fr = "Verbosity.",
+        ignored = "a listing option; this command prints nothing more with INFO=2." },
   }
 end

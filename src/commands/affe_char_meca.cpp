@@ -31,23 +31,9 @@ model::SpaceFunction valueOf(const Keywords& occ, const std::string& key, bool c
   }
 }
 
-// NOEUD and MAILLE name nodes and cells of the mesh: a name it lacks is an error of the occurrence.
-void requireNamesInMesh(const mesh::Mesh& mesh, const Keywords& occ) {
-  for (const auto& name : occ.texts("NOEUD"))
-    if (mesh.findNode(name) < 0) throw Error(occ.path + "/NOEUD: node '" + name + "' not found in the mesh");
-  for (const auto& name : occ.texts("MAILLE"))
-    if (mesh.findCell(name) < 0) throw Error(occ.path + "/MAILLE: cell '" + name + "' not found in the mesh");
-}
+std::vector<int> nodesOf(const mesh::Mesh& mesh, const Keywords& occ) { return selectNodes(mesh, occ); }
 
-std::vector<int> nodesOf(const mesh::Mesh& mesh, const Keywords& occ) {
-  requireNamesInMesh(mesh, occ);
-  return selectNodes(mesh, occ);
-}
-
-std::vector<int> cellsOf(const mesh::Mesh& mesh, const Keywords& occ) {
-  requireNamesInMesh(mesh, occ);
-  return selectCells(mesh, occ);
-}
+std::vector<int> cellsOf(const mesh::Mesh& mesh, const Keywords& occ) { return selectCells(mesh, occ); }
 
 void requireInModel(const model::Model& m, const Keywords& occ, const std::vector<int>& nodes) {
   for (int n : nodes)
@@ -82,13 +68,12 @@ std::string originOf(const Session& session, const Keywords& occ) { return comma
 void readLiaisonDdl(const model::Model& m, const Session& session, const Keywords& occ,
                     model::MechanicalLoad& load) {
   const mesh::Mesh& mesh = m.mesh();
-  requireNamesInMesh(mesh, occ);
   std::vector<int> nodes;
   for (const auto& g : occ.texts("GROUP_NO")) {
     const auto& members = mesh.nodeGroup(g);
     nodes.insert(nodes.end(), members.begin(), members.end());
   }
-  for (const auto& name : occ.texts("NOEUD")) nodes.push_back(mesh.nodeIndex(name));
+  for (int n : namedNodes(mesh, occ, "NOEUD")) nodes.push_back(n);
   const auto ddl = occ.texts("DDL");
   const auto coef = occ.reals("COEF_MULT");
   if (nodes.size() != ddl.size() || coef.size() != ddl.size())
@@ -209,8 +194,7 @@ void readFaceImpo(const model::Model& m, const Session& session, const Keywords&
                   mesh::cellTypeName(mesh.cellType(c)));
   m.checkCellsOnModel(cells, occ.path);
   std::vector<char> excluded(mesh.nodeCount(), 0);
-  for (const auto& g : occ.texts("SANS_GROUP_NO"))
-    for (int n : mesh.nodeGroup(g)) excluded[n] = 1;
+  for (int n : excludedNodes(mesh, occ)) excluded[n] = 1;
   std::vector<int> nodes;
   std::vector<Eigen::Vector2d> normalSum(mesh.nodeCount(), Eigen::Vector2d::Zero());
   std::vector<char> seen(mesh.nodeCount(), 0);
@@ -231,7 +215,8 @@ void readFaceImpo(const model::Model& m, const Session& session, const Keywords&
       }
     }
   }
-  if (nodes.empty()) throw Error(occ.path + ": every node is left out by SANS_GROUP_NO");
+  if (nodes.empty())
+    throw Error(occ.path + ": every node is left out by SANS_GROUP_NO, SANS_NOEUD, SANS_GROUP_MA or SANS_MAILLE");
   readImposedAt(occ, nodes, load);
   for (const char* key : {"DNOR", "DTAN"}) {
     if (!occ.has(key)) continue;
@@ -270,13 +255,15 @@ void checkOutwardNormals(const mesh::Mesh& mesh, const Keywords& occ, const std:
   }
   std::string groups;
   for (const auto& g : occ.texts("GROUP_MA")) groups += (groups.empty() ? "'" : ", '") + g + "'";
-  throw Error(occ.path + "/GROUP_MA: the normal of cell " + mesh.cellName(s) + " (group " + group +
-              ") points into the cell " + mesh.cellName(inward.front().cell) + " it bounds" +
+  throw Error(occ.path + (group.empty() ? "/MAILLE" : "/GROUP_MA") + ": the normal of cell " + mesh.cellName(s) +
+              (group.empty() ? "" : " (group " + group + ")") + " points into the cell " +
+              mesh.cellName(inward.front().cell) + " it bounds" +
               (inward.size() > 1 ? " (" + std::to_string(inward.size()) + " of the " + std::to_string(cells.size()) +
                                        " edges are reversed)"
                                  : std::string()) +
               ", so the pressure would pull; orient the edges first: MODI_MAILLAGE{reuse = <mesh>, MAILLAGE = <mesh>, "
-              "ORIE_PEAU = {GROUP_MA_PEAU = {" + groups + "}}} (VERI_NORM = 'NON' skips this check)");
+              "ORIE_PEAU = {GROUP_MA_PEAU = {" + (groups.empty() ? std::string("<a group holding them>") : groups) +
+              "}}} (VERI_NORM = 'NON' skips this check)");
 }
 
 // The imposed values and relations of one load with constant values, eliminated: a set

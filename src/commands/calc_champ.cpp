@@ -363,7 +363,7 @@ ConceptPtr calcChamp(const Keywords& k, Session& session, ConceptPtr reuse) {
   ctx.modelIndex.assign(mesh.cellCount(), -1);
   for (std::size_t i = 0; i < ctx.model->cells().size(); ++i) ctx.modelIndex[ctx.model->cells()[i]] = static_cast<int>(i);
   ctx.keep.assign(mesh.cellCount(), 0);
-  if (k.has("GROUP_MA")) {
+  if (k.has("GROUP_MA") || k.has("MAILLE")) {
     for (int c : selectCells(mesh, k))
       if (ctx.modelIndex[c] >= 0) ctx.keep[c] = 1;
   } else {

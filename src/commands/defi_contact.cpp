@@ -11,6 +11,7 @@
 
 #include "commands/contact_concept.hpp"
 #include "commands/model_concepts.hpp"
+#include "commands/selection.hpp"
 #include "core/error.hpp"
 #include "core/number_format.hpp"
 #include "lang/operators.hpp"
@@ -75,12 +76,14 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
     if (!(zs.outsideTolerance >= 0))
       throw Error(z.path + "/TOLE_PROJ_EXT = " + std::to_string(zs.outsideTolerance) + ": it must be >= 0");
     zs.maxDistance = z.real("DIST_APPA");
-    // SANS_GROUP_NO, SANS_GROUP_MA: nodes without contact.
+    // SANS_GROUP_NO, SANS_NOEUD, SANS_GROUP_MA, SANS_MAILLE: nodes without contact.
     for (const auto& g : z.has("SANS_GROUP_NO") ? z.texts("SANS_GROUP_NO") : std::vector<std::string>{})
       for (int n : ofGroups(z, "SANS_GROUP_NO", [&] { return mesh.nodeGroup(g); })) zs.excludedNodes.push_back(n);
     for (const auto& g : z.has("SANS_GROUP_MA") ? z.texts("SANS_GROUP_MA") : std::vector<std::string>{})
       for (int n : mesh.nodesOfCells(ofGroups(z, "SANS_GROUP_MA", [&] { return mesh.cellGroup(g); })))
         zs.excludedNodes.push_back(n);
+    for (int n : namedNodes(mesh, z, "SANS_NOEUD")) zs.excludedNodes.push_back(n);
+    for (int n : mesh.nodesOfCells(namedCells(mesh, z, "SANS_MAILLE"))) zs.excludedNodes.push_back(n);
     const std::string algo = z.text("ALGO_CONT");
     if (!settings.continueFormulation) {
       if (algo == "PENALISATION") zs.penalty = positive(z, "E_N");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "commands/mesh_concept.hpp"
+#include "commands/selection.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
 #include "lang/operators.hpp"
@@ -41,7 +42,7 @@ std::vector<int> cellsOf(const mesh::Mesh& m, const Keywords& occ) {
   if (occ.has("INTERSEC")) return mesh::intersectionOfCellGroups(m, occ.texts("INTERSEC"));
   if (occ.has("DIFFE")) return mesh::differenceOfCellGroups(m, occ.texts("DIFFE"));
   std::vector<int> out;
-  for (const auto& name : occ.texts("MAILLE")) out.push_back(m.cellIndex(name));
+  for (int c : namedCells(m, occ, "MAILLE")) out.push_back(c);
   return uniqueInOrder(out);
 }
 
@@ -129,7 +130,7 @@ void addNodeGroupChecked(mesh::Mesh& m, const std::string& name, std::vector<int
 
 // One node named by a group of one node (GROUP_NO_ORIG) or by name (NOEUD_ORIG); -1 when neither.
 int endNode(const mesh::Mesh& m, const Keywords& occ, const std::string& groupKey, const std::string& nodeKey) {
-  if (occ.has(nodeKey)) return m.nodeIndex(occ.text(nodeKey));
+  if (occ.has(nodeKey)) return namedNode(m, occ, nodeKey, occ.text(nodeKey));
   if (!occ.has(groupKey)) return -1;
   const std::string g = occ.text(groupKey);
   const auto& nodes = m.nodeGroup(g);
@@ -202,7 +203,7 @@ void createNodeGroups(mesh::Mesh& m, const Keywords& occ, const std::string& whe
   if (occ.has("GROUP_NO")) {
     nodes = nodeGroupOperation(m, occ.texts("GROUP_NO"), "UNION");
   } else if (occ.has("NOEUD")) {
-    for (const auto& n : occ.texts("NOEUD")) nodes.push_back(m.nodeIndex(n));
+    nodes = namedNodes(m, occ, "NOEUD");
     nodes = uniqueInOrder(nodes);
   } else {
     for (const char* op : {"UNION", "INTERSEC", "DIFFE"})

@@ -152,9 +152,10 @@ ConceptPtr affe(const Keywords& k, const std::string& typeCham, const std::strin
   Builder b(modelOf(k, typeCham, "AFFE"), quantity);
   const auto& mesh = b.model().mesh();
   for (const auto& occ : k.factor("AFFE")) {
-    if (occ.has("GROUP_NO"))
-      throw Error(occ.path + ": GROUP_NO: a field at Gauss points (TYPE_CHAM='" + typeCham +
-                  "') is assigned on cells: give TOUT='OUI' or GROUP_MA");
+    for (const char* key : {"GROUP_NO", "NOEUD"})
+      if (occ.has(key))
+        throw Error(occ.path + ": " + key + ": a field at Gauss points (TYPE_CHAM='" + typeCham +
+                    "') is assigned on cells: give TOUT='OUI', GROUP_MA or MAILLE");
     if (functions && occ.has("VALE"))
       throw Error(occ.path + ": TYPE_CHAM " + typeCham + " takes functions: VALE_F, not VALE");
     if (!functions && occ.has("VALE_F"))
@@ -169,7 +170,9 @@ ConceptPtr affe(const Keywords& k, const std::string& typeCham, const std::strin
       if (b.position(c) >= 0) cells.push_back(static_cast<std::size_t>(b.position(c)));
     if (cells.empty())
       throw Error(occ.path + ": no cell of " +
-                  (occ.has("TOUT") ? std::string("the mesh") : "GROUP_MA " + expr::joinNames(occ.texts("GROUP_MA"))) +
+                  (occ.has("TOUT")       ? std::string("the mesh")
+                   : occ.has("GROUP_MA") ? "GROUP_MA " + expr::joinNames(occ.texts("GROUP_MA"))
+                                         : "MAILLE " + expr::joinNames(occ.texts("MAILLE"))) +
                   " belongs to the model (AFFE_MODELE)");
     std::vector<double> vals = functions ? std::vector<double>{} : occ.reals("VALE");
     std::vector<expr::FunctionPtr> fns;
@@ -334,9 +337,10 @@ ConceptPtr asse(const Keywords& k, const std::string& typeCham, const std::strin
   const auto& mesh = model->mesh();
   bool any = false;
   for (const auto& occ : k.factor("ASSE")) {
-    if (occ.has("GROUP_NO"))
-      throw Error(occ.path + ": GROUP_NO: a field at Gauss points (TYPE_CHAM='" + typeCham +
-                  "') is assembled on cells: give TOUT='OUI' or GROUP_MA");
+    for (const char* key : {"GROUP_NO", "NOEUD"})
+      if (occ.has(key))
+        throw Error(occ.path + ": " + key + ": a field at Gauss points (TYPE_CHAM='" + typeCham +
+                    "') is assembled on cells: give TOUT='OUI', GROUP_MA or MAILLE");
     const auto sc = occ.conceptPtr("CHAM_GD");
     const std::string name = session.nameOf(*sc);
     auto src = std::dynamic_pointer_cast<CellFieldConcept>(sc);

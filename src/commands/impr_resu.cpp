@@ -169,8 +169,8 @@ Item resolve(const Keywords& occ, bool textFormat) {
   if (given && given != item.mesh)
     throw Error("MAILLAGE: the mesh given is not the mesh of the " +
                 std::string(occ.has("RESULTAT") ? "result (RESULTAT)" : "field (CHAM_GD)"));
-  // Restrictions (text format): the nodes and cells of TOUT / GROUP_MA / GROUP_NO.
-  if (occ.has("GROUP_MA") || occ.has("GROUP_NO")) {
+  // Restrictions (text format): the nodes and cells of TOUT / GROUP_MA / MAILLE / GROUP_NO / NOEUD.
+  if (occ.has("GROUP_MA") || occ.has("GROUP_NO") || occ.has("MAILLE") || occ.has("NOEUD")) {
     item.nodes = selectNodes(*item.mesh, occ);
     item.cells = selectCells(*item.mesh, occ);
   }
@@ -405,11 +405,13 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
     try {
       items.push_back(resolve(occs[i], text));
     } catch (const Error& e) {
-      throw Error((occs.size() > 1 ? "RESU[" + std::to_string(i + 1) + "]: " : std::string("RESU: ")) + e.what());
+      const std::string what = e.what();
+      if (what.rfind(occs[i].path + "/", 0) == 0) throw;  // already names the occurrence
+      throw Error((occs.size() > 1 ? "RESU[" + std::to_string(i + 1) + "]: " : std::string("RESU: ")) + what);
     }
-    if (!text && (occs[i].has("GROUP_MA") || occs[i].has("GROUP_NO")))
-      Messages::alarm("IMPR_RESU", "GROUP_MA / GROUP_NO restrict FORMAT='RESULTAT' only; FORMAT='" + format +
-                                       "' writes the whole mesh");
+    if (!text && (occs[i].has("GROUP_MA") || occs[i].has("GROUP_NO") || occs[i].has("MAILLE") || occs[i].has("NOEUD")))
+      Messages::alarm("IMPR_RESU", "GROUP_MA / MAILLE / GROUP_NO / NOEUD restrict FORMAT='RESULTAT' only; FORMAT='" +
+                                       format + "' writes the whole mesh");
   }
 
   Merged merged;

@@ -24,6 +24,7 @@
 
 #include "commands/field_concepts.hpp"
 #include "commands/instant_selection.hpp"
+#include "commands/selection.hpp"
 #include "commands/table_concept.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
@@ -57,8 +58,7 @@ class Reader {
       restricted_ = true;
       for (const auto& g : occ.has("GROUP_MA") ? occ.texts("GROUP_MA") : std::vector<std::string>{})
         for (int c : mesh.cellGroup(g)) keep_.insert(c);
-      for (const auto& m : occ.has("MAILLE") ? occ.texts("MAILLE") : std::vector<std::string>{})
-        keep_.insert(mesh.cellIndex(m));
+      for (int c : namedCells(mesh, occ, "MAILLE")) keep_.insert(c);
     }
   }
 
@@ -286,7 +286,7 @@ ConceptPtr postReleveT(const Keywords& k, Session& session, ConceptPtr reuse) {
       for (const auto& g : occ.texts("GROUP_NO"))
         for (int n : mesh->nodeGroup(g)) nodes.push_back(n);
     } else if (occ.has("NOEUD")) {
-      for (const auto& n : occ.texts("NOEUD")) nodes.push_back(mesh->nodeIndex(n));
+      nodes = namedNodes(*mesh, occ, "NOEUD");
     } else {  // TOUT: the nodes of the field
       if (sources.front().nodal) nodes = sources.front().support;
       if (nodes.empty() && sources.front().nodal)

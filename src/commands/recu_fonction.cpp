@@ -10,6 +10,7 @@
 #include "commands/field_concepts.hpp"
 #include "commands/function_concepts.hpp"
 #include "commands/instant_selection.hpp"
+#include "commands/selection.hpp"
 #include "core/number_format.hpp"
 #include "commands/table_concept.hpp"
 #include "core/error.hpp"
@@ -24,7 +25,8 @@ namespace {
 // first (an alarm when the group has several, as code_aster).
 int oneOf(const Keywords& k, const mesh::Mesh& mesh, bool node) {
   const std::string single = node ? "NOEUD" : "MAILLE", group = node ? "GROUP_NO" : "GROUP_MA";
-  if (k.has(single)) return node ? mesh.nodeIndex(k.text(single)) : mesh.cellIndex(k.text(single));
+  if (k.has(single))
+    return node ? namedNode(mesh, k, single, k.text(single)) : namedCell(mesh, k, single, k.text(single));
   const std::string name = k.text(group);
   const auto& members = node ? mesh.nodeGroup(name) : mesh.cellGroup(name);
   if (members.empty()) throw Error(group + " " + name + " is empty");

@@ -84,7 +84,7 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
   std::vector<mechanics::Kinematics> byCell(mesh.cellCount(), mechanics::Kinematics::SmallStrain);
   for (const auto& occ : k.factor("COMPORTEMENT")) {
     const auto kin = mechanics::kinematicsFromName(occ.text("DEFORMATION"));
-    std::vector<int> cells = occ.has("GROUP_MA") ? selectCells(mesh, occ) : model->cells();
+    std::vector<int> cells = occ.has("GROUP_MA") || occ.has("MAILLE") ? selectCells(mesh, occ) : model->cells();
     for (int c : cells) byCell[c] = kin;
   }
   for (int c : model->cells()) problem.kinematics.push_back(byCell[c]);

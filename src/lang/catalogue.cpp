@@ -165,6 +165,16 @@ class Reader {
     if (statut != "o" && statut != "f" && statut != "d") fail(where, "statut must be 'o', 'f' or 'd'");
     k.statut = statut[0];
     k.rules = rules(t, where);
+    lua_getfield(L, t, "ignored");
+    const int ignoredType = lua_type(L, -1);
+    if (ignoredType == LUA_TSTRING) k.ignored = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    if (ignoredType != LUA_TNIL) {
+      if (kind == "BLOC") fail(where, "a BLOC cannot be ignored (mark its keywords)");
+      if (ignoredType != LUA_TSTRING || k.ignored.empty())
+        fail(where, "ignored = \"...\" gives the reason the keyword changes no result");
+      if (k.statut == 'o') fail(where, "a mandatory keyword cannot be ignored");
+    }
     if (kind == "SIMP") {
       k.kind = KeywordSpec::Kind::Simple;
       for (const auto& v : fieldValues(t, "typ", where)) k.types.push_back(v.text);

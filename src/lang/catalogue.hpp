@@ -28,6 +28,10 @@ struct KeywordSpec {
   // statut: 'o' mandatory, 'f' optional, 'd' (factor only) optional but one
   // occurrence with its defaults is created when absent.
   char statut = 'f';
+  // Accepted and ignored (simple and factor keywords): the reason it changes no
+  // result. The validator checks the value as declared, then drops the keyword,
+  // so no operator ever reads it. Empty: a keyword like any other.
+  std::string ignored;
 
   // Simple keywords.
   std::vector<std::string> types;  // 'R', 'I', 'TXM', 'grma', 'grno', 'CO', 'lua_function', concept type names

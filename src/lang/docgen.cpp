@@ -32,6 +32,7 @@ void keywordsText(std::ostringstream& out, const std::vector<KeywordSpec>& specs
         if (k.hasValMin) out << "; >= " << k.valMin;
         if (k.hasValMax) out << "; <= " << k.valMax;
         if (!k.doc.empty()) out << ". " << k.doc;
+        if (!k.ignored.empty()) out << (k.doc.empty() ? ". " : " ") << "Accepted and ignored: " << k.ignored;
         out << "\n";
         break;
       case KeywordSpec::Kind::Factor:
@@ -39,6 +40,7 @@ void keywordsText(std::ostringstream& out, const std::vector<KeywordSpec>& specs
             << (k.statut == 'd' ? "optional (created with its defaults when absent)" : statut) << ", "
             << k.minOcc << ".." << (k.maxOcc < 0 ? std::string("n") : std::to_string(k.maxOcc)) << " occurrences";
         if (!k.doc.empty()) out << ". " << k.doc;
+        if (!k.ignored.empty()) out << (k.doc.empty() ? ". " : " ") << "Accepted and ignored: " << k.ignored;
         out << "\n";
         rulesText(out, k.rules, indent + "  ");
         keywordsText(out, k.children, indent + "  ");

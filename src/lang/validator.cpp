@@ -101,10 +101,14 @@ class LevelValidator {
     out.path = path_;
     if (others && !extra.keys().empty()) out.setFactor(others->name, {extra});
     for (const auto* k : active) {
+      // An ignored keyword is checked as declared (a misspelt value is still an
+      // error), then left out of the tree the operator reads.
+      Keywords scratch;
+      Keywords& into = k->ignored.empty() ? out : scratch;
       if (k->kind == KeywordSpec::Kind::Simple)
-        simple(*k, call, out);
+        simple(*k, call, into);
       else
-        factor(*k, call, out);
+        factor(*k, call, into);
     }
     for (const auto* r : activeRules) checkRule(*r, call);
     return out;

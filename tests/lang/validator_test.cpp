@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lang/catalogue.hpp"
+#include "lang/docgen.hpp"
 #include "lang/validator.hpp"
 
 using namespace aster;
@@ -428,4 +429,106 @@ return OPER{ nom = 'MAUVAIS', sd_prod = 'formule', SIMP{ 'C', typ = 'R' }, autre
                Error);
   EXPECT_THROW(Catalogue::fromSources({{"MAUVAIS", R"(
 return OPER{ nom = 'MAUVAIS', sd_prod = 'formule', autres_mots_cles = { 'C' } })"}}), Error);
+}
+
+// An accepted-and-ignored keyword (ignored = "reason"): checked as declared,
+// then absent from the tree the operator reads, defaults included.
+const char* kIgnore = R"(
+return PROC{ nom = 'IGNORE',
+  SIMP{ 'PAR_LOT', typ = 'TXM', defaut = 'NON', into = {'OUI', 'NON'}, ignored = "runs command by command." },
+  FACT{ 'DEBUG', ignored = "developers' checks of code_aster.",
+    SIMP{ 'SDVERI', typ = 'TXM', into = {'OUI', 'NON'} },
+  },
+  SIMP{ 'GARDE', typ = 'I', defaut = 3 },
+}
+)";
+
+TEST(Validator, IgnoredKeywordsAreCheckedThenDropped) {
+  static const Catalogue cat = Catalogue::fromSources({{"IGNORE", kIgnore}});
+  const CommandSpec& spec = *cat.find("IGNORE");
+  Keywords call;
+  call.setSimple("PAR_LOT", {Value::ofText("OUI")});
+  Keywords debug;
+  debug.setSimple("SDVERI", {Value::ofText("OUI")});
+  call.setFactor("DEBUG", {debug});
+  const Keywords out = validate(spec, call);
+  EXPECT_FALSE(out.has("PAR_LOT"));
+  EXPECT_FALSE(out.has("DEBUG"));
+  EXPECT_EQ(out.integer("GARDE"), 3);
+  EXPECT_FALSE(validate(spec, Keywords{}).has("PAR_LOT"));  // nor its default
+
+  Keywords misspelt;
+  misspelt.setSimple("PAR_LOT", {Value::ofText("OUII")});
+  EXPECT_THROW(validate(spec, misspelt), ValidationError);
+  Keywords inside;
+  Keywords badDebug;
+  badDebug.setSimple("SDVERI", {Value::ofText("PEUT-ETRE")});
+  inside.setFactor("DEBUG", {badDebug});
+  try {
+    validate(spec, inside);
+    FAIL() << "accepted";
+  } catch (const ValidationError& e) {
+    EXPECT_EQ(e.keyword, "DEBUG/SDVERI");
+  }
+}
+
+TEST(Catalogue, IgnoredNeedsAReasonAndAnOptionalKeyword) {
+  for (const char* bad : {"return PROC{ nom = 'MAUVAIS', SIMP{ 'A', typ = 'TXM', ignored = '' } }",
+                          "return PROC{ nom = 'MAUVAIS', SIMP{ 'A', typ = 'TXM', ignored = true } }",
+                          "return PROC{ nom = 'MAUVAIS', SIMP{ 'A', statut = 'o', typ = 'TXM', ignored = 'x' } }",
+                          "return PROC{ nom = 'MAUVAIS', BLOC{ 'b', condition = { A = true }, ignored = 'x' } }"})
+    EXPECT_THROW(Catalogue::fromSources({{"MAUVAIS", bad}}), Error) << bad;
+}
+
+TEST(Docgen, MarksIgnoredKeywordsWithTheirReason) {
+  static const Catalogue cat = Catalogue::fromSources({{"IGNORE", kIgnore}});
+  const std::string doc = commandReference(cat);
+  EXPECT_NE(doc.find("- `PAR_LOT` — optional, a text; default 'NON'; one of 'OUI', 'NON'. Accepted and ignored: runs "
+                     "command by command.\n"),
+            std::string::npos)
+      << doc;
+  EXPECT_NE(doc.find("- `DEBUG` — factor keyword, optional, 0..1 occurrences. Accepted and ignored: developers' checks "
+                     "of code_aster.\n"),
+            std::string::npos)
+      << doc;
+  EXPECT_EQ(doc.find("`GARDE` — optional, an integer; default 3. Accepted"), std::string::npos);
+}
+
+// The built-in catalogue: code_aster's DEBUT options are accepted, ignored and say why.
+TEST(Docgen, BuiltinReferenceMarksDebutOptionsIgnored) {
+  const std::string doc = commandReference(Catalogue::builtin());
+  const auto debut = doc.find("\n## DEBUT\n");
+  ASSERT_NE(debut, std::string::npos);
+  const std::string section = doc.substr(debut, doc.find("\n## ", debut + 1) - debut);
+  for (const char* key : {"`PAR_LOT`", "`DEBUG`", "`IGNORE_ALARM`", "`ERREUR`", "`MESURE_TEMPS`", "`CODE`"}) {
+    const auto at = section.find(key);
+    ASSERT_NE(at, std::string::npos) << key;
+    const std::string line = section.substr(at, section.find('\n', at) - at);
+    EXPECT_NE(line.find("Accepted and ignored: "), std::string::npos) << line;
+  }
+  const CommandSpec& spec = *Catalogue::builtin().find("DEBUT");
+  Keywords call, debug;
+  debug.setSimple("SDVERI", {Value::ofText("OUI")});
+  call.setFactor("DEBUG", {debug});
+  call.setSimple("IGNORE_ALARM", {Value::ofText("MODELE1_63"), Value::ofText("SUPERVIS_1")});
+  EXPECT_TRUE(validate(spec, call).keys().empty());  // nothing reaches the operator
+}
+
+// IMPR_RESU's TYPE_CHAM: only 'VECT_2D', what the GMSH writer does anyway with two
+// components, is accepted (and dropped); 'SCALAIRE' would ask for another file.
+TEST(Validator, ImprResuTypeChamOnlyTheWriterBehaviour) {
+  const CommandSpec& spec = *Catalogue::builtin().find("IMPR_RESU");
+  auto call = [](const char* typeCham) {
+    Keywords resu;
+    resu.setSimple("CHAM_GD", {Value::ofConcept(std::make_shared<FakeConcept>("cham_no_sdaster"))});
+    resu.setSimple("NOM_CMP", {Value::ofText("DX"), Value::ofText("DY")});
+    resu.setSimple("TYPE_CHAM", {Value::ofText(typeCham)});
+    Keywords k;
+    k.setSimple("FORMAT", {Value::ofText("GMSH")});
+    k.setFactor("RESU", {resu});
+    return k;
+  };
+  const Keywords out = validate(spec, call("VECT_2D"));
+  EXPECT_FALSE(out.factor("RESU").front().has("TYPE_CHAM"));
+  EXPECT_THROW(validate(spec, call("SCALAIRE")), ValidationError);
 }
