@@ -69,6 +69,12 @@ struct Interpreter::State {
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
   std::map<std::string, std::vector<std::string>> sources;  // lines of each chunk run, by chunk name
   std::map<std::string, std::string> destroyed;  // variable unbound by DETRUIRE -> where
+  // CO('name') boxes are numbered; a macro that makes the concept of a name
+  // records it here with the last number given, so that a box made before
+  // (code_aster's idiom: MA[1] = CO('MA_1'), the macro, then MA[1] used) stands
+  // for the concept from then on.
+  std::uint64_t newNameSerial = 0;
+  std::map<std::string, std::pair<std::uint64_t, std::weak_ptr<Concept>>> madeForName;
 
   // Every <F> raised during the run, in order (the first kKeptFatals): one the
   // study catches (pcall, a coroutine) still ends the run with exit status 2.
@@ -113,6 +119,7 @@ struct ConceptBox {
 struct NewNameBox {
   std::uint32_t tag = 0;
   std::string name;
+  std::uint64_t serial = 0;  // State::newNameSerial when CO made it
 };
 
 template <class Box>
@@ -229,7 +236,16 @@ Value toValue(lua_State* L, int idx) {
         checkNotDestroyed(*box->ptr);
         return Value::ofConcept(box->ptr);
       }
-      if (auto* co = liveBox<NewNameBox>(L, idx, kNewNameMeta)) return Value::ofNewName(co->name);
+      if (auto* co = liveBox<NewNameBox>(L, idx, kNewNameMeta)) {
+        const auto& made = stateOf(L).madeForName;
+        const auto it = made.find(co->name);
+        if (it != made.end() && co->serial <= it->second.first)
+          if (ConceptPtr c = it->second.second.lock()) {  // the concept a macro made under this name
+            checkNotDestroyed(*c);
+            return Value::ofConcept(c);
+          }
+        return Value::ofNewName(co->name);
+      }
       return Value::other("an unknown userdata");
     case LUA_TTABLE: return Value::other("a table");
     default: return Value::other(std::string("a ") + luaL_typename(L, idx));
@@ -520,6 +536,7 @@ int commandImpl(lua_State* L, const CommandSpec& spec) {
     for (auto& [name, concept] : session.produced) {
       pushConcept(L, concept);
       lua_setglobal(L, name.c_str());
+      stateOf(L).madeForName[name] = {stateOf(L).newNameSerial, concept};
     }
     session.produced.clear();
     for (const auto& c : session.destroyed) unbindDestroyed(L, *c);
@@ -584,7 +601,7 @@ int coImpl(lua_State* L) {
     return -1;
   }
   void* mem = lua_newuserdatauv(L, sizeof(NewNameBox), 0);
-  new (mem) NewNameBox{kLiveBox, std::move(name)};
+  new (mem) NewNameBox{kLiveBox, std::move(name), ++stateOf(L).newNameSerial};
   luaL_setmetatable(L, kNewNameMeta);
   return 1;
 }
