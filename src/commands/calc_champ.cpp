@@ -7,7 +7,8 @@
 //   SIGM_NOEU (the mean of the ELNO values of the cells around each node);
 // - DEFORMATION: EPSI_* (linearized) and EPSG_* (Green-Lagrange) from DEPL;
 // - CRITERES: SIEQ_ELGA from SIEF_ELGA, SIEQ_ELNO from SIGM_ELNO, SIEQ_NOEU;
-// - FORCE: FORC_NODA and REAC_NODA, as the operators stored them;
+// - FORCE: FORC_NODA and REAC_NODA, as the operators stored them (STAT_NON_LINE: at every
+//   instant, the initial state included);
 // - VARI_INTERNE: VARI_ELNO, VARI_NOEU from VARI_ELGA.
 // A NOEU field asked for brings its ELNO field into the result too. GROUP_MA
 // restricts the cells the fields are computed on (and averaged over).
@@ -335,7 +336,7 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
     for (const auto& f : inst.nodal) stored = stored || f.name == name;
     if (stored) done.insert(name);
     else notes.push_back(std::string(name) + " is not stored at " + at +
-                         " (the initial state was not computed) and stays absent");
+                         " (the operator that made the result did not store it) and stays absent");
   }
 }
 

@@ -56,7 +56,7 @@ mesh::NodalField nodalField(const std::string& name, const analysis::MechanicalS
 
 ResultInstant resultInstant(const analysis::MechanicalSystem& system, const analysis::AdditionalTerms* terms,
                             double time, const Eigen::VectorXd& U, const Eigen::VectorXd& internalForces,
-                            const Eigen::VectorXd* reactions, bool withStresses) {
+                            const Eigen::VectorXd* reactions, bool withStresses, bool converged) {
   ResultInstant inst;
   inst.time = time;
   mesh::NodalField depl = nodalField("DEPL", system, U);
@@ -64,7 +64,7 @@ ResultInstant resultInstant(const analysis::MechanicalSystem& system, const anal
   inst.nodal.push_back(std::move(depl));
   if (reactions) inst.nodal.push_back(nodalField("REAC_NODA", system, *reactions));
   inst.nodal.push_back(nodalField("FORC_NODA", system, internalForces));
-  if (terms && reactions) terms->outputFields(U, inst.nodal);
+  if (terms && converged) terms->outputFields(U, inst.nodal);
   if (withStresses) {
     CellField sief{"SIEF_ELGA", {"SIXX", "SIYY", "SIZZ", "SIXY"}, system.model().cells(), {}, {}};
     system.gaussStresses(U, sief.offsets, sief.values);

@@ -21,10 +21,11 @@ void readExcit(const Keywords& k, Session& session, const std::shared_ptr<model:
 
 // The fields of a state stored in a result: DEPL (with the terms' own unknowns),
 // REAC_NODA, FORC_NODA, the terms' fields, SIEF_ELGA (unless withStresses is false), and
-// VARI_ELGA (V1, V2, ...) of the accepted state when a law has internal variables. The
-// initial state has no reactions (reactions null) and no terms' fields: it was not computed.
+// VARI_ELGA (V1, V2, ...) of the accepted state when a law has internal variables.
+// REAC_NODA only when reactions is not null. The terms' fields (contact pressures...)
+// only for a converged state (converged: the initial state was not solved for).
 ResultInstant resultInstant(const analysis::MechanicalSystem& system, const analysis::AdditionalTerms* terms,
                             double time, const Eigen::VectorXd& U, const Eigen::VectorXd& internalForces,
-                            const Eigen::VectorXd* reactions, bool withStresses = true);
+                            const Eigen::VectorXd* reactions, bool withStresses = true, bool converged = true);
 
 }  // namespace aster::lang

@@ -226,10 +226,12 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     kept.erase(std::remove_if(kept.begin(), kept.end(), [&](const ResultInstant& i) { return i.time > times.front() + eps; }),
                kept.end());
   } else {
-    // NUME_ORDRE 0: the initial state, with its internal forces and stresses (zero unless ETAT_INIT).
+    // NUME_ORDRE 0: the initial state, with its internal forces, stresses and reactions
+    // (the internal forces less the loads; zero unless ETAT_INIT or a load at the first instant).
     Eigen::VectorXd fint, fext;
     system.evaluate(U.head(system.dofCount()), times.front(), fint, fext, nullptr, nullptr);
-    result->instants.push_back(resultInstant(system, terms.get(), times.front(), U, fint, nullptr));
+    const Eigen::VectorXd reactions = fint - fext;
+    result->instants.push_back(resultInstant(system, terms.get(), times.front(), U, fint, &reactions, true, false));
   }
 
   // Every instant goes to disk as soon as it is in the result.
