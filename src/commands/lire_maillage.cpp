@@ -32,7 +32,9 @@ ConceptPtr lireMaillage(const Keywords& k, Session& session, ConceptPtr) {
   session.files.addInput(path, "read by LIRE_MAILLAGE at " + session.where);  // never written over
   auto m = std::make_shared<mesh::Mesh>();
   if (format == "ASTER") {
-    *m = mesh::readAsterMesh(path.string());
+    std::vector<std::string> alarms;
+    *m = mesh::readAsterMesh(path.string(), &alarms);
+    for (const auto& a : alarms) Messages::alarm("LIRE_MAILLAGE", session.where + ": " + a);
   } else if (format == "GMSH") {
     mesh::GmshReadOptions options;
     options.scripts = session.unsafeLua;  // gmsh scripts run commands: not in the Lua sandbox
