@@ -163,7 +163,7 @@ class PreGmshReader {
   void readNodes() {
     const long count = in_.integer("the number of nodes");
     if (count < 0) in_.fail(in_.line(), "negative number of nodes");
-    nodes_.reserve(static_cast<std::size_t>(count));
+    nodes_.reserve(static_cast<std::size_t>(std::min(count, 1L << 20)));  // the count may lie
     for (long k = 0; k < count; ++k) {
       const int line = in_.line();
       const long number = in_.integer("a node number");
@@ -180,7 +180,7 @@ class PreGmshReader {
   void readElements() {
     const long count = in_.integer("the number of elements");
     if (count < 0) in_.fail(in_.line(), "negative number of elements");
-    elements_.reserve(static_cast<std::size_t>(count));
+    elements_.reserve(static_cast<std::size_t>(std::min(count, 1L << 20)));
     std::unordered_map<long, int> seen;
     for (long k = 0; k < count; ++k) {
       GmshElement e{};
@@ -236,11 +236,9 @@ class PreGmshReader {
     for (std::size_t k = 0; k < elements_.size(); ++k) {
       const GmshElement& e = elements_[k];
       const CellType type = kTypes[e.gmshType - 1].type;
-      const int kept = nodeCount(type);  // the first ones: QUAD9 and PYRAM14 lose their centre
-      std::vector<int> gmshOrder(kept);
-      for (int j = 0; j < kept; ++j) gmshOrder[j] = j;
-      const std::vector<int> asterOrder = toAsterOrder(NodeConvention::Gmsh, type, gmshOrder);
-      for (int j : asterOrder) {
+      // The first nodes of gmsh's QUAD9 and 14-node pyramid are its QUAD8 and PYRAM13:
+      // the permutation of those drops the centre.
+      for (int j : asterFromForeign(NodeConvention::Gmsh, type)) {
         const long number = nodeNumbers_[e.firstNode + static_cast<std::size_t>(j)];
         cellNodes[k].push_back(number);
         used[static_cast<std::size_t>(nodeIndex_.at(number))] = 1;
