@@ -281,3 +281,28 @@ TEST(AsterFormat, GroupLinesStillRefuseUnknownKeysAndBadNblige) {
   m = errorOf(coor + "SEG2 NBLIGE=9\n S A B\nFINSF\nFIN\n");
   EXPECT_NE(m.find("the file ends inside section SEG2 opened at line 5"), std::string::npos) << m;
 }
+
+// code_aster reads 80 columns of a line and refuses a longer one: entries
+// continue on further lines; title lines are cut, and one that starts with FIN
+// is written as a comment (it would end the file).
+TEST(AsterFormat, WrittenLinesFitIn80Columns) {
+  Mesh m;
+  m.title = "FIN of the title\n" + std::string(100, 'T');
+  std::vector<int> nodes;
+  for (int n = 0; n < 27; ++n) nodes.push_back(m.addNode({-1.0 / 3 - n, 2.0e-300, 7.0}, "NODE" + std::to_string(10000 + n)));
+  m.addCell(CellType::HEXA27, nodes, "CELL_WITH_A_LONG_NAME");
+  m.addCellGroup("G", {0});
+  std::ostringstream out;
+  writeAsterMesh(m, out);
+  std::istringstream lines(out.str());
+  std::string line;
+  while (std::getline(lines, line)) EXPECT_LE(line.size(), 80u) << line;
+  const Mesh r = parseAsterMesh(out.str(), "wide.mail");
+  EXPECT_EQ(r.title, std::string(78, 'T'));
+  ASSERT_EQ(r.nodeCount(), 27);
+  for (int n = 0; n < 27; ++n)  // 16 significant digits
+    EXPECT_LE((r.node(n) - m.node(n)).norm(), 1e-15 * m.node(n).norm()) << n;
+  ASSERT_EQ(r.cellCount(), 1);
+  EXPECT_EQ(r.cellName(0), "CELL_WITH_A_LONG_NAME");
+  EXPECT_TRUE(std::equal(r.cellNodes(0).begin(), r.cellNodes(0).end(), m.cellNodes(0).begin()));
+}

@@ -1,12 +1,13 @@
 #include "mesh/io/aster_format.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <iomanip>
+#include <ostream>
 #include <string_view>
 #include <vector>
 
@@ -415,31 +416,68 @@ Mesh readAsterMesh(const std::string& path, std::vector<std::string>* alarms) {
   return parseAsterMesh(text, path, alarms);
 }
 
+namespace {
+
+// code_aster reads 80 columns of a line (U3.01.00) and refuses a line with more.
+constexpr std::size_t kColumns = 80;
+
+// One entry (a node and its coordinates, a cell and its nodes), its words
+// padded to `width`, continued on indented lines so that no line passes column 80.
+void writeEntry(std::ostream& out, const std::vector<std::string>& words, std::size_t width) {
+  std::string line;
+  auto flush = [&] {
+    line.erase(line.find_last_not_of(' ') + 1);
+    out << line << '\n';
+  };
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    const std::size_t used = line.find_last_not_of(' ') + 1;  // 0 for an empty line
+    if (k > 0 && used + 1 + words[k].size() > kColumns) {
+      flush();
+      line.assign(width + 1, ' ');
+    }
+    line += ' ';
+    line += words[k];
+    if (words[k].size() < width) line.append(width - words[k].size(), ' ');
+  }
+  flush();
+}
+
+}  // namespace
+
 void writeAsterMesh(const Mesh& mesh, std::ostream& out) {
-  out << " TITRE\n " << (mesh.title.empty() ? std::string("MESH WRITTEN BY ASTER-LITE") : mesh.title)
-      << "\n FINSF\n %\n";
+  out << " TITRE\n";
+  std::string title = mesh.title.empty() ? std::string("MESH WRITTEN BY ASTER-LITE") : mesh.title;
+  for (std::size_t begin = 0; begin <= title.size();) {
+    std::size_t end = title.find('\n', begin);
+    if (end == std::string::npos) end = title.size();
+    const std::string line = title.substr(begin, std::min(end - begin, kColumns - 2));  // only a title
+    // A line starting with FIN or FINSF would end the title (and FIN the file): a comment then.
+    const std::string_view first = firstWord(line);
+    out << (sameWord(first, "FIN") || sameWord(first, "FINSF") ? "%" : " ") << line << "\n";
+    begin = end + 1;
+  }
+  out << " FINSF\n %\n";
   const int dim = mesh.spaceDimension();
   out << " COOR_" << dim << "D\n";
-  out << std::scientific << std::setprecision(15);
+  std::vector<std::string> words;
+  char number[32];
   for (int i = 0; i < mesh.nodeCount(); ++i) {
-    out << " " << std::left << std::setw(8) << mesh.nodeName(i) << std::right;
+    words.assign(1, mesh.nodeName(i));
     const auto x = mesh.node(i);
-    for (int d = 0; d < dim; ++d) out << " " << std::setw(22) << x[d];
-    out << "\n";
+    for (int d = 0; d < dim; ++d) {
+      std::snprintf(number, sizeof number, "%22.15e", x[d]);
+      words.emplace_back(number);
+    }
+    writeEntry(out, words, 8);
   }
   out << " FINSF\n %\n";
   for (int c = 0; c < mesh.cellCount();) {
     const CellType t = mesh.cellType(c);
     out << " " << cellTypeName(t) << "\n";
     for (; c < mesh.cellCount() && mesh.cellType(c) == t; ++c) {
-      out << " " << std::left << std::setw(8) << mesh.cellName(c);
-      int k = 0;
-      for (int n : mesh.cellNodes(c)) {
-        if (k > 0 && k % 8 == 0) out << "\n " << std::setw(8) << "";
-        out << " " << std::setw(8) << mesh.nodeName(n);
-        ++k;
-      }
-      out << std::right << "\n";
+      words.assign(1, mesh.cellName(c));
+      for (int n : mesh.cellNodes(c)) words.push_back(mesh.nodeName(n));
+      writeEntry(out, words, 8);
     }
     out << " FINSF\n %\n";
   }
