@@ -297,6 +297,7 @@ class AsterParser {
 
   void readCoordinates(const std::vector<Token>& body, int dim) {
     if (dim > spaceDim_) spaceDim_ = dim;
+    mesh_.reserve(mesh_.nodeCount() + static_cast<int>(body.size() / static_cast<std::size_t>(dim + 1)), 0, 0);
     for (std::size_t k = 0; k < body.size();) {
       const Token& name = body[k++];
       Eigen::Vector3d x = Eigen::Vector3d::Zero();
@@ -351,6 +352,7 @@ class AsterParser {
 
   Mesh build() {
     mesh_.setSpaceDimension(spaceDim_ == 0 ? 3 : spaceDim_);
+    mesh_.reserve(mesh_.nodeCount(), static_cast<int>(cells_.size()), static_cast<int>(cellNodes_.size()));
     int nodes[kMaxCellNodes];
     for (const auto& c : cells_) {
       const int n = nodeCount(c.type);
