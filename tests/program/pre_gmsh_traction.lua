@@ -25,4 +25,10 @@ local function at(group, cmp, value)
 end
 TEST_RESU{RESU = {at('GM5', 'DX', 2 * S / E), at('GM5', 'DY', -NU * S / E),
                   at('GM4', 'DX', 0.0), at('GM4', 'DY', 0.0)}}
+
+-- LIRE_MAILLAGE{FORMAT='GMSH'} reads the MSH 1 file itself as PRE_GMSH converts it.
+MA2 = LIRE_MAILLAGE{FORMAT = 'GMSH', UNITE = 19}
+assert(MA2:getNumberOfNodes() == 6 and MA2:getNumberOfCells() == 6, 'LIRE_MAILLAGE GMSH: 6 nodes, 6 cells')
+assert(table.concat(MA2:getGroupsOfCells(), ' ') == 'GM4 GM5 GM2 GM3 GM1', table.concat(MA2:getGroupsOfCells(), ' '))
+assert(table.concat(MA2:getGroupsOfNodes(), ' ') == 'GM4 GM5', table.concat(MA2:getGroupsOfNodes(), ' '))
 FIN{}
