@@ -1,7 +1,7 @@
 return OPER{ nom = 'LIRE_MAILLAGE', sd_prod = 'maillage_sdaster', reentrant = 'n',
   fr = "Reads a mesh from a file (ASTER, MED or GMSH format) bound to a logical unit.",
   SIMP{ 'FORMAT', typ = 'TXM', defaut = 'MED', into = {'ASTER', 'MED', 'GMSH'},
-        fr = "Format of the mesh file." },
+        fr = "Format of the mesh file. GMSH: MSH 2.2 and 4.x through gmsh; MSH 1 ($NOD) and MSH 2.0 / 2.1 converted as code_aster's PRE_GMSH does (nodes N<number>, cells M<number>, groups GM<physical tag>)." },
   SIMP{ 'UNITE', typ = 'I', defaut = 20, val_min = 1,
         fr = "Logical unit of the mesh file (see DEFI_FICHIER or the -u option)." },
   BLOC{ 'b_format_med', condition = { FORMAT = 'MED' },

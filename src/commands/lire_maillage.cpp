@@ -11,6 +11,7 @@
 #include "lang/operators.hpp"
 #include "mesh/io/aster_format.hpp"
 #include "mesh/io/gmsh_format.hpp"
+#include "mesh/io/pre_gmsh_format.hpp"
 #include "mesh/mesh_check.hpp"
 #if __has_include("mesh/io/med_format.hpp")
 #include "mesh/io/med_format.hpp"
@@ -32,7 +33,12 @@ ConceptPtr lireMaillage(const Keywords& k, Session& session, ConceptPtr) {
   session.files.addInput(path, "read by LIRE_MAILLAGE at " + session.where);  // never written over
   auto m = std::make_shared<mesh::Mesh>();
   if (format == "ASTER") {
-    *m = mesh::readAsterMesh(path.string());
+    std::vector<std::string> alarms;
+    *m = mesh::readAsterMesh(path.string(), &alarms);
+    for (const auto& a : alarms) Messages::alarm("LIRE_MAILLAGE", session.where + ": " + a);
+  } else if (format == "GMSH" && mesh::isPreGmshOnlyFile(path.string())) {
+    // MSH 1, 2.0, 2.1 (code_aster's test meshes): converted as code_aster's PRE_GMSH does.
+    *m = mesh::readGmshAsPreGmsh(path.string());
   } else if (format == "GMSH") {
     mesh::GmshReadOptions options;
     options.scripts = session.unsafeLua;  // gmsh scripts run commands: not in the Lua sandbox

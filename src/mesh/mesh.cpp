@@ -14,6 +14,19 @@ void Mesh::setSpaceDimension(int dim) {
   spaceDim_ = dim;
 }
 
+void Mesh::reserve(int nodes, int cells, int cellNodes) {
+  const auto n = static_cast<std::size_t>(std::max(nodes, 0));
+  const auto c = static_cast<std::size_t>(std::max(cells, 0));
+  xyz_.reserve(3 * n);
+  nodeNames_.reserve(n);
+  nodeByName_.reserve(n);
+  types_.reserve(c);
+  offsets_.reserve(c + 1);
+  conn_.reserve(static_cast<std::size_t>(std::max(cellNodes, 0)));
+  cellNames_.reserve(c);
+  cellByName_.reserve(c);
+}
+
 std::string Mesh::freshNodeName(const std::string& prefix) {
   std::string name;
   do name = prefix + std::to_string(nextNodeNumber_++);

@@ -29,6 +29,9 @@ class Mesh {
   int spaceDimension() const { return spaceDim_; }
   void setSpaceDimension(int dim);
   std::string title;
+  // Room for that many nodes and cells in all (cellNodes: their nodes in all),
+  // so that a reader does not grow the tables by steps.
+  void reserve(int nodes, int cells, int cellNodes);
 
   // --- nodes
   // An empty name gets an automatic unique one ("N<number>"); a duplicate name throws.

@@ -190,3 +190,119 @@ TEST(AsterFormat, Coordinates1D) {
   EXPECT_EQ(m.node(2), Eigen::Vector3d(1.25, 0.0, 0.0));
   EXPECT_EQ(m.cellCount(), 2);
 }
+
+// The header-line variants of code_aster's own meshes (U3.01.00): items after
+// the section keyword describe the section and change nothing, except NOM=
+// (a group's name) and NBLIGE= (the header's number of lines).
+TEST(AsterFormat, HeaderItemsAsCodeAsterReadsThem) {
+  const std::string text =
+      "TITRE    NOM=PLAQUE   NBOBJ=1 NBLIGE=1 NBLIGT=3\n a plate\nFINSF\n"
+      "COOR_2D    NOM=INDEFINI    NBOBJ=3      NBLIGE=5        NBLIGT=8\n"
+      "           NUMIN=1                      NUMAX=3\n"
+      "           AUTEUR=INTERF_ST/TF          DATE=25/02/2000\n"
+      "% XMAX= 1.0\n"
+      "%FORMAT=(1*NOM_DE_NOEUD,2*COORD)\n"
+      " A 0.0 0.0\n B 1.0 0.0\n C 0.0 1.0\nFINSF\n"
+      "TRIA3 NOBJ=1\n T1 A B C\nFINSF\n"
+      "SEG2    NOM=INDEFINI   NBOBJ=2   free words\n S1 A B\n S2 B C\nFINSF\n"
+      "GROUP_MA    NOM=BORD   NBOBJ=2      NBLIGE=3      NBLIGT=5\n"
+      "            NUMIN=1                  NUMAX=2\n"
+      "            AUTEUR=INTERF_ST/TF       DATE=25/02/2000\n"
+      " S1 S2\nFINSF\n"
+      "GROUP_NO NOM = BASE INFO=2\n A B\nFINSF\n"
+      "FIN\n";
+  const Mesh m = parseAsterMesh(text, "header.mail");
+  EXPECT_EQ(m.title, "a plate");
+  EXPECT_EQ(m.spaceDimension(), 2);
+  ASSERT_EQ(m.nodeCount(), 3);  // NUMIN/AUTEUR lines are header lines, not nodes
+  EXPECT_EQ(m.node(m.nodeIndex("C")), Eigen::Vector3d(0.0, 1.0, 0.0));
+  EXPECT_EQ(m.countCells(CellType::TRIA3), 1);
+  EXPECT_EQ(m.countCells(CellType::SEG2), 2);
+  EXPECT_EQ(m.cellGroup("BORD"), (std::vector<int>{1, 2}));
+  EXPECT_EQ(m.nodeGroup("BASE"), (std::vector<int>{0, 1}));
+}
+
+TEST(AsterFormat, TitleLineItemsAndFreeTextAreIgnored) {
+  for (const std::string titleLine :
+       {"TITRE NOM=SSNP15C", "TITRE NOM=", "TITRE NM=SSNP15A", "TITRE TROIS BARRES D'UN ELEMENT",
+        "TITRE AUTEUR=INTERFACE_GMSH DATE=24/11/2026"}) {
+    const Mesh m = parseAsterMesh(titleLine + "\n two\n lines\nFINSF\nCOOR_1D N\n A 0.0\nFINSF\nFIN\n", "t.mail");
+    EXPECT_EQ(m.title, "two\nlines") << titleLine;
+    EXPECT_EQ(m.nodeCount(), 1) << titleLine;
+  }
+}
+
+TEST(AsterFormat, EqualsSignSeparatesWordsInsideSections) {
+  const Mesh m = parseAsterMesh(
+      "COOR_2D\n A = 0.0 0.0\n B 1.0 0.0\n C 1.0 1.0\nFINSF\n"
+      "SEG2\n S1 = A B\n S2= B C\nFINSF\nTRIA3\nT = A B C\nFINSF\nFIN\n",
+      "eq.mail");
+  EXPECT_EQ(m.nodeCount(), 3);
+  ASSERT_EQ(m.cellCount(), 3);
+  EXPECT_EQ(m.cellName(1), "S2");
+  EXPECT_EQ(m.cellNodes(2)[2], m.nodeIndex("C"));
+}
+
+// FIN first on a line closes the open section and ends the file; an extra
+// FINSF between two sections is skipped.
+TEST(AsterFormat, FinClosesASectionAndExtraFinsfIsSkipped) {
+  const std::string coor = "COOR_2D\n A 0 0\n B 1 0\nFINSF\n";
+  Mesh m = parseAsterMesh(coor + "POI1\n P1 A\n P2 B\nFIN\n", "fin.mail");
+  EXPECT_EQ(m.countCells(CellType::POI1), 2);
+  m = parseAsterMesh(coor + "SEG2\n S A B\nFINSF\nFINSF\nGROUP_MA NOM=G\n S\nFIN\nthis is not read\n", "fin.mail");
+  EXPECT_EQ(m.cellGroup("G").size(), 1u);
+  // FIN in the middle of a cell: the cell misses nodes.
+  const std::string msg = errorOf(coor + "SEG2\n S A\nFIN\n");
+  EXPECT_NE(msg.find("bad.mail:6: SEG2 cell 'S' needs 2 nodes, the section ends after 1"), std::string::npos) << msg;
+}
+
+// code_aster reads free text after GROUP_NO (without NOM=) as nothing and names
+// the group after the first word of the section: so does aster-lite, with an alarm.
+TEST(AsterFormat, FreeTextOnAGroupLineIsIgnoredWithAnAlarm) {
+  std::vector<std::string> alarms;
+  const Mesh m = parseAsterMesh("COOR_2D\n A 0 0\n B 1 0\nFINSF\nGROUP_NO   ENCAS\n A B\nFINSF\nFIN\n", "g.mail", &alarms);
+  EXPECT_EQ(m.nodeGroupNames(), std::vector<std::string>{"A"});
+  EXPECT_EQ(m.nodeGroup("A"), std::vector<int>{1});
+  ASSERT_EQ(alarms.size(), 1u);
+  EXPECT_NE(alarms[0].find("g.mail:5: the text 'ENCAS' after GROUP_NO is ignored"), std::string::npos) << alarms[0];
+  EXPECT_NE(alarms[0].find("named after the first word of the section, 'A'"), std::string::npos) << alarms[0];
+}
+
+TEST(AsterFormat, GroupLinesStillRefuseUnknownKeysAndBadNblige) {
+  const std::string coor = "COOR_2D\n A 0 0\n B 1 0\nFINSF\n";
+  std::string m = errorOf(coor + "GROUP_NO NAME=BASE\n A B\nFINSF\nFIN\n");
+  EXPECT_NE(m.find("bad.mail:5: unknown option 'NAME' on a section line (expected NOM= or INFO=)"), std::string::npos) << m;
+  m = errorOf(coor + "GROUP_NO NOM=\n A B\nFINSF\nFIN\n");
+  EXPECT_NE(m.find("bad.mail:5: NOM= needs a group name"), std::string::npos) << m;
+  m = errorOf(coor + "SEG2 NBLIGE=deux\n S A B\nFINSF\nFIN\n");
+  EXPECT_NE(m.find("bad.mail:5: NBLIGE= needs the number of lines of the section's header, got 'deux'"),
+            std::string::npos) << m;
+  // NBLIGE past the end of the file.
+  m = errorOf(coor + "SEG2 NBLIGE=9\n S A B\nFINSF\nFIN\n");
+  EXPECT_NE(m.find("the file ends inside section SEG2 opened at line 5"), std::string::npos) << m;
+}
+
+// code_aster reads 80 columns of a line and refuses a longer one: entries
+// continue on further lines; title lines are cut, and one that starts with FIN
+// is written as a comment (it would end the file).
+TEST(AsterFormat, WrittenLinesFitIn80Columns) {
+  Mesh m;
+  m.title = "FIN of the title\n" + std::string(100, 'T');
+  std::vector<int> nodes;
+  for (int n = 0; n < 27; ++n) nodes.push_back(m.addNode({-1.0 / 3 - n, 2.0e-300, 7.0}, "NODE" + std::to_string(10000 + n)));
+  m.addCell(CellType::HEXA27, nodes, "CELL_WITH_A_LONG_NAME");
+  m.addCellGroup("G", {0});
+  std::ostringstream out;
+  writeAsterMesh(m, out);
+  std::istringstream lines(out.str());
+  std::string line;
+  while (std::getline(lines, line)) EXPECT_LE(line.size(), 80u) << line;
+  const Mesh r = parseAsterMesh(out.str(), "wide.mail");
+  EXPECT_EQ(r.title, std::string(78, 'T'));
+  ASSERT_EQ(r.nodeCount(), 27);
+  for (int n = 0; n < 27; ++n)  // 16 significant digits
+    EXPECT_LE((r.node(n) - m.node(n)).norm(), 1e-15 * m.node(n).norm()) << n;
+  ASSERT_EQ(r.cellCount(), 1);
+  EXPECT_EQ(r.cellName(0), "CELL_WITH_A_LONG_NAME");
+  EXPECT_TRUE(std::equal(r.cellNodes(0).begin(), r.cellNodes(0).end(), m.cellNodes(0).begin()));
+}
