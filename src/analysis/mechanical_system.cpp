@@ -443,7 +443,7 @@ void MechanicalSystem::acceptState(const Eigen::VectorXd& U) {
       const int* d = elements_.dofs(cell.element);
       for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) u[i] = U(d[i]);
       cell.kernel->stresses(X, u, historyOf(cell, un), stress.data() + 4 * cell.state,
-                            variables.data() + cell.variables);
+                            variables.data() + cell.variables, false);
     }
   } catch (const Error& e) {
     throw InvalidStateError(e.what());
@@ -464,7 +464,7 @@ void MechanicalSystem::gaussStresses(const Eigen::VectorXd& U, std::vector<int>&
     const int* d = elements_.dofs(cell.element);
     for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) u[i] = U(d[i]);
     s.resize(4 * cell.kernel->gaussPoints());
-    cell.kernel->stresses(X, u, historyOf(cell, un), s.data(), variables.data());
+    cell.kernel->stresses(X, u, historyOf(cell, un), s.data(), variables.data(), true);
     values.insert(values.end(), s.begin(), s.end());
     offsets.push_back(static_cast<int>(values.size()));
   }

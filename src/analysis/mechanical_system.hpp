@@ -105,7 +105,8 @@ class MechanicalSystem {
   void acceptState(const Eigen::VectorXd& U);
 
   // SIEF_ELGA at U: per cell of the model, 4 components per Gauss point (SIZZ the
-  // hoop stress in AXIS).
+  // hoop stress in AXIS), Cauchy stresses (in GROT_GDEP sigma = F S F^T / J, as
+  // code_aster stores them; the laws' state keeps S).
   void gaussStresses(const Eigen::VectorXd& U, std::vector<int>& offsets, std::vector<double>& values) const;
   // VARI_ELGA of the accepted state: internalVariableCount() values (V1, V2, ...) per
   // Gauss point of every cell of the model, zero past a cell's own law's count.

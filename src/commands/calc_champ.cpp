@@ -2,7 +2,7 @@
 // instants, added to it (reuse) or to a copy of it:
 // - CONTRAINTE: SIEF_ELGA (the stored one; computed from DEPL with the
 //   materials' elasticity when an evol_elas was stored without it), SIGM_ELGA (the
-//   same values: on continuum elements code_aster's SIGM is SIEF, PK2 in GROT_GDEP),
+//   same values: on continuum elements code_aster's SIGM is SIEF, the Cauchy stress),
 //   SIEF_ELNO / SIGM_ELNO (extrapolated, post::modelGaussToNodes), SIEF_NOEU /
 //   SIGM_NOEU (the mean of the ELNO values of the cells around each node);
 // - DEFORMATION: EPSI_* (linearized) and EPSG_* (Green-Lagrange) from DEPL;

@@ -34,9 +34,9 @@ class PlaneKernel final : public ElementKernel {
     }
   }
   void stresses(const double* X, const double* u, const ElementHistory& history, double* out,
-                double* variables) const override {
+                double* variables, bool cauchy) const override {
     element_.gaussStresses(Eigen::Map<const typename Element::Coords>(X),
-                           Eigen::Map<const typename Element::Vector>(u), history, out, variables);
+                           Eigen::Map<const typename Element::Vector>(u), history, out, variables, cauchy);
   }
   void gaussGeometry(const double* X, double* xy, double* weightDet) const override {
     element_.gaussGeometry(Eigen::Map<const typename Element::Coords>(X), xy, weightDet);

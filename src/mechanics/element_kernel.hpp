@@ -26,9 +26,10 @@ class ElementKernel {
   virtual void internalForce(const double* X, const double* u, const ElementHistory& history, double* variables,
                              double* f, double* K) const = 0;
   // 4 values (SIXX, SIYY, SIZZ, SIXY; SIZZ the hoop stress in AXIS) per Gauss point,
-  // and the new internal variables.
+  // and the new internal variables. The law's measure (S in GROT_GDEP: the state the
+  // next increment starts from), or with cauchy the Cauchy stress (SIEF_ELGA).
   virtual void stresses(const double* X, const double* u, const ElementHistory& history, double* out,
-                        double* variables) const = 0;
+                        double* variables, bool cauchy) const = 0;
   // Gauss point coordinates (x, y per point) and weight*detJ (times x in AXIS: per
   // radian); either may be null.
   virtual void gaussGeometry(const double* X, double* xy, double* weightDet) const = 0;

@@ -26,7 +26,7 @@ void IsotropicElasticity::integrate(const LawInput& in, LawOutput<VoigtTangent>&
   if (hypothesis_ == PlaneHypothesis::PlaneStress) {
     out.stress = stress(in.strain);
     out.stressZZ = 0.0;
-    out.strainZZ = -lambda_ / (lambda_ + 2 * mu_) * in.strain.trace();
+    out.strainZZ = outOfPlaneStrain(in.strain);
   } else {
     const double ezz = in.strainZZ;  // 0 in D_PLAN
     const double volume = lambda_ * (in.strain.trace() + ezz);

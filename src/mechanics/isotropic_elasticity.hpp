@@ -44,6 +44,10 @@ class IsotropicElasticity final : public BehaviourLaw {
     return planeLambda_ * strain.trace() * Eigen::Matrix2d::Identity() + 2 * mu_ * strain;
   }
   // The zz stress: lambda tr(e) in plane strain (e_zz = 0), zero in plane stress.
+  // e_zz: 0 in D_PLAN, the one making s_zz = 0 in C_PLAN.
+  double outOfPlaneStrain(const Eigen::Matrix2d& strain) const {
+    return hypothesis_ == PlaneHypothesis::PlaneStress ? -lambda_ / (lambda_ + 2 * mu_) * strain.trace() : 0.0;
+  }
   double outOfPlaneStress(const Eigen::Matrix2d& strain) const {
     return hypothesis_ == PlaneHypothesis::PlaneStress ? 0.0 : lambda_ * strain.trace();
   }
@@ -56,6 +60,7 @@ class IsotropicElasticity final : public BehaviourLaw {
   void integrate(const LawInput& in, LawOutput<IsotropicTangent>& out, bool withTangent) const {
     out.stress = stress(in.strain);
     out.stressZZ = outOfPlaneStress(in.strain);
+    out.strainZZ = outOfPlaneStrain(in.strain);
     if (withTangent) out.tangent = {planeLambda_, mu_};
   }
   void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const override;

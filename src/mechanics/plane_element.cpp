@@ -73,10 +73,11 @@ void PlaneElement<T, Law>::internalForce(const Coords& X, const Vector& u, Vecto
 
 template <CellType T, class Law>
 void PlaneElement<T, Law>::gaussStresses(const Coords& X, const Vector& u, const ElementHistory& history, double* out,
-                                         double* variables) const {
+                                         double* variables, bool cauchy) const {
   if (axisymmetric_)
-    return arithmetic::gaussStressesAxisymmetric<T>(table_, *law_, kinematics_, X, u, history, out, variables);
-  arithmetic::gaussStresses<T>(table_, *law_, kinematics_, X, u, history, out, variables);
+    return arithmetic::gaussStressesAxisymmetric<T>(table_, *law_, kinematics_, X, u, history, out, variables,
+                                                    cauchy);
+  arithmetic::gaussStresses<T>(table_, *law_, kinematics_, X, u, history, out, variables, cauchy);
 }
 
 template <CellType T, class Law>

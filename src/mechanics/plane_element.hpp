@@ -16,8 +16,9 @@
 //   S = law(E) (PK2), P = F S (PK1); with ELAS this is Saint Venant-Kirchhoff.
 //   f_ai = int P_iJ dN_a/dX_J, K = exact derivative of f:
 //   material part int B(F)^T D B(F) + geometric part int (grad N_a . S grad N_b) I.
-// Stresses at Gauss points: Cauchy for PETIT; PK2 for GROT_GDEP (what code_aster
-// stores in SIEF_ELGA for GROT_GDEP), components SIXX, SIYY, SIZZ, SIXY.
+// Stresses at Gauss points: Cauchy for PETIT; PK2 for GROT_GDEP (the law's
+// measure), or on demand Cauchy's sigma = F S F^T / J (what code_aster stores in
+// SIEF_ELGA for GROT_GDEP); components SIXX, SIYY, SIZZ, SIXY.
 #pragma once
 #include <memory>
 #include <type_traits>
@@ -83,8 +84,10 @@ class PlaneElement {
 
   // Gauss point stresses, stressComponents values per point, point after point
   // (out has gaussPointCount() * 4 entries), and the new internal variables as above.
+  // The law's measure (S in GROT_GDEP, what the next increment starts from), or
+  // with cauchy the Cauchy stress (code_aster's SIEF_ELGA; the same in PETIT).
   void gaussStresses(const Coords& X, const Vector& u, const ElementHistory& history, double* out,
-                     double* variables) const;
+                     double* variables, bool cauchy = false) const;
   // From the natural state.
   void gaussStresses(const Coords& X, const Vector& u, double* out) const;
 

@@ -7,6 +7,7 @@
 // fem/ or of the law is emitted from AVX2 code (tests/mechanics/avx2_symbols.cmake
 // checks).
 #pragma once
+#include <cmath>
 #include <Eigen/Core>
 
 #include "fem/isoparametric.hpp"
@@ -151,21 +152,41 @@ void internalForce(const fem::ShapeTable<T>& table, const Law& law, Kinematics k
   if (K) K->template triangularView<Eigen::StrictlyLower>() = K->transpose();
 }
 
+// The 4 stress values of a point: the law's measure (S in GROT_GDEP), or with
+// cauchy in GROT_GDEP the Cauchy stress sigma = F S F^T / J, J = det(F) F_zz, and
+// sigma_zz = F_zz^2 S_zz / J (F_zz: 1 in D_PLAN, sqrt(1 + 2 E_zz) in C_PLAN, the
+// hoop stretch in AXIS), what code_aster stores in SIEF_ELGA.
+template <class Response>
+void writeStress(const Response& response, bool cauchy, const Eigen::Matrix2d& F, double Fzz, double* out) {
+  if (!cauchy) {
+    out[0] = response.stress(0, 0);
+    out[1] = response.stress(1, 1);
+    out[2] = response.stressZZ;
+    out[3] = response.stress(0, 1);
+    return;
+  }
+  const double J = F.determinant() * Fzz;
+  const Eigen::Matrix2d sigma = F * response.stress * F.transpose() / J;
+  out[0] = sigma(0, 0);
+  out[1] = sigma(1, 1);
+  out[2] = Fzz * Fzz * response.stressZZ / J;
+  out[3] = sigma(0, 1);
+}
+
 template <CellType T, class Law, class Vector>
 void gaussStresses(const fem::ShapeTable<T>& table, const Law& law, Kinematics kinematics,
                    const fem::NodeCoords<T>& X, const Vector& u, const ElementHistory& history, double* out,
-                   double* variables) {
+                   double* variables, bool cauchy) {
   typename fem::Cell<T>::Gradients G;
+  cauchy = cauchy && kinematics == Kinematics::GreenLagrange;
   for (int q = 0; q < table.size(); ++q) {
     pointGradients<T>(table, X, q, G);
     Eigen::Matrix2d F, E;
     strainAt<T>(kinematics, G, u, F, E);
     LawOutput<typename Law::Tangent> response;
     integrateLaw<T>(law, kinematics, G, E, history, q, variables, response, false);
-    out[4 * q + 0] = response.stress(0, 0);
-    out[4 * q + 1] = response.stress(1, 1);
-    out[4 * q + 2] = response.stressZZ;
-    out[4 * q + 3] = response.stress(0, 1);
+    // C_PLAN: the law reports E_zz (s_zz = 0); D_PLAN: E_zz = 0.
+    writeStress(response, cauchy, F, cauchy ? std::sqrt(1.0 + 2.0 * response.strainZZ) : 1.0, out + 4 * q);
   }
 }
 
@@ -277,8 +298,9 @@ void internalForceAxisymmetric(const fem::ShapeTable<T>& table, const Law& law, 
 template <CellType T, class Law, class Vector>
 void gaussStressesAxisymmetric(const fem::ShapeTable<T>& table, const Law& law, Kinematics kinematics,
                                const fem::NodeCoords<T>& X, const Vector& u, const ElementHistory& history,
-                               double* out, double* variables) {
+                               double* out, double* variables, bool cauchy) {
   typename fem::Cell<T>::Gradients G;
+  cauchy = cauchy && kinematics == Kinematics::GreenLagrange;
   for (int q = 0; q < table.size(); ++q) {
     pointGradients<T>(table, X, q, G);
     const auto& N = table.values(q);
@@ -289,10 +311,7 @@ void gaussStressesAxisymmetric(const fem::ShapeTable<T>& table, const Law& law, 
     hoopStrainAt<T>(kinematics, N, R, u, Ftt, Ett);
     LawOutput<VoigtTangent> response;
     integrateAxisymmetricLaw<T>(law, kinematics, G, N, R, E, Ett, history, q, variables, response, false);
-    out[4 * q + 0] = response.stress(0, 0);
-    out[4 * q + 1] = response.stress(1, 1);
-    out[4 * q + 2] = response.stressZZ;
-    out[4 * q + 3] = response.stress(0, 1);
+    writeStress(response, cauchy, F, Ftt, out + 4 * q);
   }
 }
 

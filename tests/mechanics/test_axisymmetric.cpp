@@ -86,6 +86,17 @@ TEST(Axisymmetric, RadialExpansionByHand) {
       EXPECT_NEAR(s[4 * q + 2], 2 * (lambda + mu) * e, 1e-13);
       EXPECT_NEAR(s[4 * q + 3], 0.0, 1e-13);
     }
+    // Cauchy (SIEF_ELGA): F = diag(1 + a, 1) and F_tt = 1 + a in GROT_GDEP, J = (1 + a)^2:
+    // sigma_rr = S_rr, sigma_zz = S_zz / (1 + a)^2, sigma_tt = S_tt; PETIT: the same as S.
+    const double J = k == Kinematics::SmallStrain ? 1.0 : (1 + a) * (1 + a);
+    ElementHistory history;
+    element.gaussStresses(X, u, history, s, nullptr, true);
+    for (int q = 0; q < 4; ++q) {
+      EXPECT_NEAR(s[4 * q + 0], 2 * (lambda + mu) * e, 1e-13);
+      EXPECT_NEAR(s[4 * q + 1], 2 * lambda * e / J, 1e-13);
+      EXPECT_NEAR(s[4 * q + 2], 2 * (lambda + mu) * e, 1e-13);
+      EXPECT_NEAR(s[4 * q + 3], 0.0, 1e-13);
+    }
     // Per radian: the x forces sum to int S_tt F_tt dA = S_tt F_tt (area 1); the
     // right edge (r = 2) carries int P_rr r dz = 2 P_rr, P_rr = F_rr S_rr.
     PlaneElement<CellType::QUAD4>::Vector f;
@@ -260,6 +271,20 @@ void planeStressLargeStrain() {
     EXPECT_NEAR(s[4 * q + 1], S(1, 1), 1e-13);
     EXPECT_EQ(s[4 * q + 2], 0.0);
     EXPECT_NEAR(s[4 * q + 3], S(0, 1), 1e-13);
+  }
+  // SIEF_ELGA: the Cauchy stress F S F^T / J, J = det(F) F_zz with F_zz = sqrt(1 + 2 E_zz)
+  // the thickness stretch; its zz component stays 0.
+  const double Fzz = std::sqrt(1 + 2 * Ezz);
+  const Eigen::Matrix2d sigma = F * S * F.transpose() / (F.determinant() * Fzz);
+  std::vector<double> natural(element.gaussPointCount() * element.internalVariableCount() + 1, 0.0);
+  ElementHistory history;
+  history.variables = natural.data();
+  element.gaussStresses(X, u, history, s.data(), natural.data(), true);
+  for (int q = 0; q < element.gaussPointCount(); ++q) {
+    EXPECT_NEAR(s[4 * q + 0], sigma(0, 0), 1e-13);
+    EXPECT_NEAR(s[4 * q + 1], sigma(1, 1), 1e-13);
+    EXPECT_EQ(s[4 * q + 2], 0.0);
+    EXPECT_NEAR(s[4 * q + 3], sigma(0, 1), 1e-13);
   }
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> uni(-1, 1);

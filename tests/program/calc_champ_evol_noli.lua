@@ -7,8 +7,8 @@
 -- Green-Lagrange strain E = (t (H + H^T) + t^2 H^T H) / 2, the linearized one
 -- eps = t (H + H^T) / 2, and the second Piola-Kirchhoff stress S = lambda tr(E) I + 2 mu E
 -- (E_zz = 0: S_zz = lambda tr(E)), lambda = E NU / ((1 + NU)(1 - 2 NU)), mu = E / (2 (1 + NU)).
--- SIEF_ELGA holds S (code_aster's choice for GROT_GDEP), and so do SIGM_ELGA, SIGM_ELNO,
--- SIGM_NOEU (on continuum elements code_aster's SIGM is SIEF). EPSG_* is E, EPSI_* is eps.
+-- SIEF_ELGA holds the Cauchy stress F S F^T / J (as code_aster in GROT_GDEP), and so do
+-- SIGM_ELGA, SIGM_ELNO, SIGM_NOEU (on continuum elements code_aster's SIGM is SIEF). EPSG_* is E, EPSI_* is eps.
 -- TOUT_ORDRE reaches the initial state NUME_ORDRE 0, unloaded: its reactions are zero.
 -- NUME_ORDRE, INST and LIST_INST select instants.
 local YOUNG, NU = 200.0, 0.3
@@ -25,8 +25,16 @@ local function exact(t)
   local gl = {EPXX = eps.EPXX + 0.5 * hth(1, 1), EPYY = eps.EPYY + 0.5 * hth(2, 2), EPZZ = 0.0,
               EPXY = eps.EPXY + 0.5 * hth(1, 2)}
   local tr = gl.EPXX + gl.EPYY
-  local s = {SIXX = lambda * tr + 2 * mu * gl.EPXX, SIYY = lambda * tr + 2 * mu * gl.EPYY, SIZZ = lambda * tr,
-             SIXY = 2 * mu * gl.EPXY}
+  local S = {{lambda * tr + 2 * mu * gl.EPXX, 2 * mu * gl.EPXY}, {2 * mu * gl.EPXY, lambda * tr + 2 * mu * gl.EPYY}}
+  -- Cauchy: sigma = F S F^T / J, F = I + t H (F_zz = 1), sigma_zz = S_zz / J.
+  local F = {{1 + h[1][1], h[1][2]}, {h[2][1], 1 + h[2][2]}}
+  local J = F[1][1] * F[2][2] - F[1][2] * F[2][1]
+  local function sigma(i, j)
+    local v = 0.0
+    for k = 1, 2 do for l = 1, 2 do v = v + F[i][k] * S[k][l] * F[j][l] end end
+    return v / J
+  end
+  local s = {SIXX = sigma(1, 1), SIYY = sigma(2, 2), SIZZ = lambda * tr / J, SIXY = sigma(1, 2)}
   return s, eps, gl
 end
 local function checkField(res, name, t, ref, scale, minValues)

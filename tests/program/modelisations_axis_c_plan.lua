@@ -16,7 +16,9 @@
 -- 3. C_PLAN, STAT_NON_LINE GROT_GDEP: DX = d on DROITE, DX = 0 on GAUCHE, DY = 0 on
 --    BAS: the homogeneous uniaxial state of Saint Venant-Kirchhoff in plane stress,
 --    E11 = ((1 + d)^2 - 1)/2, S11 = E E11, S22 = S33 = 0, E22 = -NU E11 (from S22 = 0
---    and S33 = 0), so u_y = (sqrt(1 + 2 E22) - 1) y.
+--    and S33 = 0), so u_y = (sqrt(1 + 2 E22) - 1) y. SIEF_ELGA is the Cauchy stress
+--    F S F^T / J (as code_aster), F = diag(1 + d, m, m), m = sqrt(1 - 2 NU E11):
+--    SIXX = (1 + d)^2 S11 / ((1 + d) m^2) = (1 + d) E E11 / m^2.
 local E, NU = 200.0, 0.3
 local function near(a, b, tol, what)
   if not (math.abs(a - b) <= tol) then error(string.format('%s: %.17g, expected %.17g', what, a, b), 2) end
@@ -100,5 +102,5 @@ for n = 1, MA:getNumberOfNodes() do
   near(ug[2 * n - 1], d * xyz[3 * n - 2], 1e-12, 'C_PLAN GROT_GDEP: DX of node ' .. n)
   near(ug[2 * n], (m - 1) * xyz[3 * n - 1], 1e-10, 'C_PLAN GROT_GDEP: DY of node ' .. n)
 end
-checkSief(NG, 1.0, {SIXX = E * E11, SIYY = 0.0, SIZZ = 0.0, SIXY = 0.0}, 'C_PLAN GROT_GDEP')
+checkSief(NG, 1.0, {SIXX = (1 + d) * E * E11 / (m * m), SIYY = 0.0, SIZZ = 0.0, SIXY = 0.0}, 'C_PLAN GROT_GDEP')
 print('MODELISATIONS: every check passed')

@@ -11,8 +11,9 @@
 --    derived by hand: follower (TYPE_CHARGE='SUIV', on the deformed top of length
 --    l1): Cauchy sigma_22 = (l2 / l1) S22 = -q; dead (FIXE_CSTE, on the reference
 --    top): P22 = l2 S22 = -q. Either load must give back l1, l2 exactly, SIEF_ELGA
---    (second Piola-Kirchhoff stress, as code_aster) S11 = 0, S22, and FORC_NODA DY
---    summing over HAUT to the applied force, -q l1 (follower) or -q (dead).
+--    (the Cauchy stress F S F^T / J, as code_aster) sigma_11 = 0,
+--    sigma_22 = (l2 / l1) S22, and FORC_NODA DY summing over HAUT to the applied
+--    force, -q l1 (follower) or -q (dead).
 -- 3. VERI_NORM = 'NON' on tests/bad_input/base.mail, whose HAUT edges are walked
 --    left to right (normal into the body): no check, and the pressure pulls, as
 --    each edge's own normal says: sigma_yy = +q.
@@ -74,8 +75,8 @@ for _, case in ipairs({{'SUIV', qFollower, l1}, {'FIXE_CSTE', qDead, 1.0}}) do
                           CONVERGENCE = {RESI_GLOB_RELA = 1e-12}, INCREMENT = {LIST_INST = L5}}
   checkDepl(R, l1 - 1, l2 - 1, 'GROT_GDEP ' .. kind)
   for g, s in ipairs(R:getField('SIEF_ELGA', 1.0):getValues()) do
-    if (g - 1) % 4 == 0 then near(s, 0.0, 1e-9, kind .. ' S11 at value ' .. g) end
-    if (g - 1) % 4 == 1 then near(s, S22, 1e-9, kind .. ' S22 at value ' .. g) end
+    if (g - 1) % 4 == 0 then near(s, 0.0, 1e-9, kind .. ' sigma_11 at value ' .. g) end
+    if (g - 1) % 4 == 1 then near(s, l2 / l1 * S22, 1e-9, kind .. ' sigma_22 at value ' .. g) end
   end
   near(sumOver(R, 'FORC_NODA', 'HAUT', 2), -qq * length, 1e-9, kind .. ' FORC_NODA DY over HAUT')
   near(sumOver(R, 'REAC_NODA', 'BAS', 2), qq * length, 1e-9, kind .. ' reactions on BAS')
