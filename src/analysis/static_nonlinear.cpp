@@ -39,7 +39,7 @@ StaticNonlinear::StaticNonlinear(MechanicalSystem& system, AdditionalTerms* term
   solver_->solver->setOrdering(settings_.renum);
   solver_->solver->setSingularityDigits(settings_.nprec);
   // Contact's terms keep the check: their symmetry is not exact by construction.
-  solver_->solver->setSymmetricByConstruction(!terms_ && system_.symmetricTangent());
+  solver_->solver->setSymmetricByConstruction(!terms_ && (system_.symmetricTangent() || settings_.symmetrize));
 }
 
 void StaticNonlinear::buildPattern() {
@@ -64,6 +64,7 @@ void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatr
   r_.setZero(n_);
   r_.head(system_.dofCount()) = fint_ - fext_;
   if (terms_) terms_->assemble(U, r_, *pattern_, termsFirstElement_, withMatrix ? &K_ : nullptr);
+  if (withMatrix && settings_.symmetrize) linalg::symmetrizeValues(K_);  // the pattern is structurally symmetric
   stats_.assemblySeconds += seconds(start);
 }
 

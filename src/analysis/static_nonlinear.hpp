@@ -37,6 +37,7 @@ struct NewtonSettings {
   Prediction prediction = Prediction::Tangent;
   int reacIter = 1;            // REAC_ITER: reassemble the tangent every n iterations (0: never)
   int reacIncr = 1;            // REAC_INCR: reassemble the prediction's tangent every n steps (0: first only)
+  bool symmetrize = false;     // MATR_RIGI_SYME='OUI': solve with the symmetric part of the tangent
   bool arret = true;           // ARRET='NON': accept a step after ITER_GLOB_MAXI iterations
   bool useRela = true;         // RESI_GLOB_RELA is a criterion
   bool useMaxi = false;        // RESI_GLOB_MAXI is a criterion (both given: both must hold)

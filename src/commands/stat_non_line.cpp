@@ -105,6 +105,7 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
                                                     : analysis::Prediction::Tangent;
   settings.reacIter = static_cast<int>(newton.integer("REAC_ITER"));
   settings.reacIncr = static_cast<int>(newton.integer("REAC_INCR"));
+  settings.symmetrize = newton.text("MATR_RIGI_SYME") == "OUI";
   const auto& conv = k.factor("CONVERGENCE").front();
   // RESI_GLOB_RELA (1e-6 by default, when RESI_GLOB_MAXI is absent) and/or RESI_GLOB_MAXI.
   settings.useRela = conv.has("RESI_GLOB_RELA");

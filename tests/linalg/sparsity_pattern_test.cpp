@@ -67,3 +67,24 @@ TEST(SymmetryCheck, AgreesWithRequireSymmetricOnUncompressedInput) {
 
 }  // namespace
 }  // namespace aster::linalg
+
+namespace aster::linalg {
+namespace {
+
+TEST(SparseMatrix, SymmetrizeValuesKeepsThePattern) {
+  // [[4, 1, 0], [3, 5, 2], [0, -6, 7]]: symmetric part [[4, 2, 0], [2, 5, -2], [0, -2, 7]].
+  SparseMatrix A(3, 3);
+  const std::vector<Eigen::Triplet<double, int>> t = {{0, 0, 4}, {0, 1, 1}, {1, 0, 3}, {1, 1, 5},
+                                                     {1, 2, 2}, {2, 1, -6}, {2, 2, 7}};
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  const int nonzeros = static_cast<int>(A.nonZeros());
+  symmetrizeValues(A);
+  EXPECT_EQ(A.nonZeros(), nonzeros);
+  const double expected[3][3] = {{4, 2, 0}, {2, 5, -2}, {0, -2, 7}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(A.coeff(i, j), expected[i][j]) << i << "," << j;
+}
+
+}  // namespace
+}  // namespace aster::linalg
