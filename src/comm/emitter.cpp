@@ -107,6 +107,7 @@ class Emitter {
     for (const auto& [line, text] : comments_) {
       if (line >= static_cast<int>(out_.size())) out_.resize(line + 1);
       std::string& l = out_[line];
+      while (!l.empty() && (l.back() == ' ' || l.back() == '\t')) l.pop_back();
       const bool blank = l.find_first_not_of(" \t") == std::string::npos;
       l += (blank ? "--" : " --") + text;
     }
@@ -452,6 +453,7 @@ class Emitter {
     }
     if (op == "-") return {"-", "", 6};
     if (op == "*") {
+      if (isNoneSlots(*n.kids[0]) || isNoneSlots(*n.kids[1])) return {"", "py_slots", 100};
       if (a == Ty::Str || b == Ty::Str || a == Ty::List || b == Ty::List) return {"", "py_mul", 100};
       if ((isNum(a) && isNum(b)) || a == Ty::Float || b == Ty::Float) return {"*", "", 7};
       return {"", "py_mul", 100};
@@ -719,7 +721,17 @@ class Emitter {
     put(")");
   }
 
+  static bool isNoneSlots(const Node& n) {
+    return (n.kind == K::List || n.kind == K::Tuple) && n.kids.size() == 1 && n.kids[0]->kind == K::None;
+  }
   void binary(const Node& n) {
+    if (n.text == "*" && (isNoneSlots(*n.kids[0]) || isNoneSlots(*n.kids[1]))) {
+      // [None] * n: n empty slots, filled later by index; its length is n.
+      helper("py_slots");
+      put("py_slots(");
+      expr(isNoneSlots(*n.kids[0]) ? *n.kids[1] : *n.kids[0]);
+      return put(")");
+    }
     const Form f = binForm(n);
     if (!f.helper.empty()) {
       helper(f.helper);

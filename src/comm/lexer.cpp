@@ -49,6 +49,7 @@ class Lexer {
       if (atLineStart_ && depth_ == 0) {
         if (!indentation()) continue;
       }
+      atLineStart_ = false;  // a line continued inside brackets has no indentation of its own
       const char c = s_[pos_];
       if (c == '\n') {
         if (depth_ == 0 && !out_.tokens.empty() && out_.tokens.back().kind != Token::Kind::Newline)

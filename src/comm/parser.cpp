@@ -329,6 +329,14 @@ class Parser {
     return name;
   }
 
+  // Only math, __future__ and code_aster's commands exist in a translated study.
+  void checkModule(const std::string& module) const {
+    const std::string top = module.substr(0, module.find('.'));
+    if (top == "math" || top == "__future__" || top == "code_aster") return;
+    if (top == "numpy") fail("numpy is not supported");
+    fail("import of " + module + " is not supported (only math and code_aster's commands)");
+  }
+
   NodePtr importStatement() {
     auto n = std::make_unique<Node>(K::Import, line());
     ++i_;
@@ -339,6 +347,7 @@ class Parser {
         ++i_;
         alias = expectName();
       }
+      checkModule(module);
       n->names.push_back(module);
       n->names2.push_back(alias);
       if (!atOp(",")) break;
@@ -352,6 +361,7 @@ class Parser {
     ++i_;
     if (atOp(".")) fail("relative imports are not supported");
     n->text = dottedName();
+    checkModule(n->text);
     if (!atWord("import")) fail("'import' expected, found " + shown());
     ++i_;
     if (atOp("*")) {
@@ -605,11 +615,12 @@ class Parser {
       return lower;
     }
     ++i_;
-    if (!atOp("]") && !atOp(":")) upper = test();
+    if (!atOp("]") && !atOp(":") && !atOp(",")) upper = test();
     if (atOp(":")) {
       ++i_;
-      if (!atOp("]")) step = test();
+      if (!atOp("]") && !atOp(",")) step = test();
     }
+    if (atOp(",")) fail("multi-dimensional indexing is not supported");
     auto n = std::make_unique<Node>(K::Slice, ln);
     n->kids.push_back(std::move(lower));
     n->kids.push_back(std::move(upper));

@@ -17,6 +17,8 @@ const std::vector<Helper>& helpers() {
   static const std::vector<Helper> list = {
       {"py_dictmt", {}, "local py_dictmt = {}"},
       {"py_dict", {"py_dictmt"}, "local function py_dict(t) return setmetatable(t, py_dictmt) end"},
+      {"py_slots", {},
+       "local function py_slots(n) return setmetatable({}, {__len = function() return n end}) end"},
       {"py_truth", {},
        "local function py_truth(v) if v == nil or v == false or v == 0 or v == '' then return false end "
        "if type(v) == 'table' and next(v) == nil then return false end return true end"},
@@ -59,7 +61,8 @@ const std::vector<Helper>& helpers() {
        "if n == nil then error(\"could not convert string to float: '\" .. v .. \"'\", 2) end return n + 0.0 end "
        "if v == true then return 1.0 elseif v == false then return 0.0 end return v + 0.0 end"},
       {"py_round", {},
-       "local function py_round(x, n) local m = n and 10.0 ^ n or 1 local y = x * m local f = math.floor(y) local d = y - f "
+       "local function py_round(x, n) if n and n >= 0 then return tonumber(string.format('%.' .. n .. 'f', x)) + 0.0 end "
+       "local m = n and 10.0 ^ n or 1 local y = x * m local f = math.floor(y) local d = y - f "
        "if d > 0.5 or (d == 0.5 and f % 2 == 1) then f = f + 1 end "
        "if n == nil then return math.tointeger(f) or f end return f / m end"},
       {"py_len", {"py_dictmt"},
@@ -93,9 +96,11 @@ const std::vector<Helper>& helpers() {
        "local function one(field, conv, spec) local v if field == '' then n = n + 1 v = args[n] elseif field:match('^%d+$') then v = args[tonumber(field) + 1] "
        "else v = kw and kw[field] if v == nil then error(\"format field '\" .. field .. \"' not given\", 4) end end "
        "if conv == '!r' then v = py_repr(v) elseif conv == '!s' then v = py_str(v) end "
-       "local fill, align, sign, zero, width, prec, ty = spec:match('^(.?)([<>=^]?)([-+ ]?)(0?)(%d*)(%.?%d*)([bcdeEfFgGnosxX%%]?)$') "
-       "if fill == nil then error(\"format spec '\" .. spec .. \"' is not supported\", 4) end "
-       "if align == '' and fill ~= '' then sign, zero, width, prec, ty = spec:match('^([-+ ]?)(0?)(%d*)(%.?%d*)([bcdeEfFgGnosxX%%]?)$') fill = '' end "
+       "local fill, align, rest = '', '', spec "
+       "if #spec >= 2 and spec:sub(2, 2):match('[<>=^]') then fill, align, rest = spec:sub(1, 1), spec:sub(2, 2), spec:sub(3) "
+       "elseif spec:sub(1, 1):match('[<>=^]') then align, rest = spec:sub(1, 1), spec:sub(2) end "
+       "local sign, zero, width, prec, ty = rest:match('^([-+ ]?)(0?)(%d*)(%.?%d*)([bcdeEfFgGnosxX%%]?)$') "
+       "if sign == nil then error(\"format spec '\" .. spec .. \"' is not supported\", 4) end "
        "local t if ty == 'd' or ty == 'n' then t = string.format('%d', v >= 0 and math.floor(v) or math.ceil(v)) "
        "elseif ty == '%' then t = string.format('%' .. (prec ~= '' and prec or '.6') .. 'f', v * 100) .. '%' "
        "elseif ty == 'x' or ty == 'X' or ty == 'o' then t = string.format('%' .. ty, v) "

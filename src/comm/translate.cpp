@@ -24,6 +24,7 @@ Translation translateCommandFile(const std::string& text, const std::string& fil
     lines.push_back(std::move(line));
     start = end + 1;
   }
+  if (lines.size() > 1 && lines.back().empty()) lines.pop_back();  // the text's final line break
   try {
     const LexedFile lexed = lex(body);
     const NodePtr tree = parse(lexed);
