@@ -668,7 +668,7 @@ class Parser {
         return std::make_unique<Node>(K::Tuple, ln);
       }
       auto first = test();
-      if (atWord("for")) fail("generator expressions are not supported");
+      if (atWord("for")) throw TranslateError(ln, "generator expressions are not supported");
       if (atOp(")")) {
         ++i_;
         return first;  // parentheses only group
@@ -689,7 +689,7 @@ class Parser {
       while (!atOp("]")) {
         if (atOp("*")) fail("starred elements are not supported");
         list->kids.push_back(test());
-        if (atWord("for")) fail("list comprehensions are not supported");
+        if (atWord("for")) throw TranslateError(ln, "list comprehensions are not supported");
         if (!atOp(",")) break;
         ++i_;
       }
@@ -702,11 +702,11 @@ class Parser {
       while (!atOp("}")) {
         if (atOp("**")) fail("** unpacking in a dict is not supported");
         dict->kids.push_back(test());
-        if (atWord("for")) fail("set comprehensions are not supported");
+        if (atWord("for")) throw TranslateError(ln, "set comprehensions are not supported");
         if (!atOp(":")) fail("sets are not supported");
         ++i_;
         dict->kids.push_back(test());
-        if (atWord("for")) fail("dict comprehensions are not supported");
+        if (atWord("for")) throw TranslateError(ln, "dict comprehensions are not supported");
         if (!atOp(",")) break;
         ++i_;
       }
