@@ -31,6 +31,7 @@ struct Node {
     BoolOp,     // text (and or), kids[0..1]
     Compare,    // names: operators (< > == != <= >= in notin is isnot), kids: operands
     IfExp,      // kids: value, condition, else value
+    ListComp,   // kids: element, target, iterable, condition (optional): [e for t in it if c]
     // statements
     Block,      // kids: statements
     ExprStmt,   // kids[0]

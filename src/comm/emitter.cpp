@@ -83,6 +83,7 @@ struct Scope {
   std::map<std::string, Ty> types;       // names assigned in this scope
   std::map<std::string, const Node*> defs;  // functions defined in this scope
   std::set<std::string> params;
+  std::map<std::string, bool> onlyFalse;  // names every assignment of which is False
 };
 
 struct Loop {
@@ -219,6 +220,8 @@ class Emitter {
         } else {
           refuseImport(*s, m);
         }
+      } else if (s->kind == K::Block) {
+        imports(*s);
       } else {
         for (const auto& k : s->kids)
           if (k && k->kind == K::Block) imports(*k);
@@ -256,8 +259,10 @@ class Emitter {
     }
     scope_ = saved;
   }
-  void bind(std::map<std::string, Ty>& types, const Node& target, Ty t) {
+  void bind(std::map<std::string, Ty>& types, const Node& target, Ty t, bool isFalse = false) {
     if (target.kind == K::Name) {
+      auto& f = scope_->onlyFalse.try_emplace(target.text, true).first->second;
+      f = f && isFalse;
       types[target.text] = join(types.count(target.text) ? types[target.text] : Ty::Bottom, t);
     } else if (target.kind == K::Tuple || target.kind == K::List) {
       for (const auto& k : target.kids) bind(types, *k, Ty::Unknown);
@@ -275,7 +280,7 @@ class Emitter {
                 value.kids.size() == t.kids.size()) {
               for (std::size_t k = 0; k < t.kids.size(); ++k) bind(types, *t.kids[k], typeOf(*value.kids[k]));
             } else {
-              bind(types, t, typeOf(value));
+              bind(types, t, typeOf(value), value.kind == K::False);
             }
           }
           break;
@@ -312,6 +317,7 @@ class Emitter {
           break;
         }
         case K::While: collect(*s.kids[1], scope, types); break;
+        case K::Block: collect(s, scope, types); break;
         case K::Def:
           scope.defs[s.text] = &s;
           types[s.text] = Ty::Func;
@@ -380,7 +386,7 @@ class Emitter {
       case K::String: return Ty::Str;
       case K::True: case K::False: return Ty::Bool;
       case K::None: return Ty::None;
-      case K::Tuple: case K::List: return Ty::List;
+      case K::Tuple: case K::List: case K::ListComp: return Ty::List;
       case K::Dict: return Ty::Dict;
       case K::Compare: return Ty::Bool;
       case K::Unary:
@@ -629,6 +635,20 @@ class Emitter {
         return put(simple ? ")" : " end)");
       }
       case K::Compare: return compare(n);
+      case K::ListComp: {
+        put("(function() local py_r = {}");
+        const std::string prologue = forHeader(*n.kids[1], *n.kids[2]);
+        put(prologue);
+        if (n.kids.size() > 3) {
+          put(" if");
+          cond(*n.kids[3]);
+          put(" then");
+        }
+        put(" py_r[#py_r + 1] = ");
+        expr(*n.kids[0]);
+        if (n.kids.size() > 3) put(" end");
+        return put(" end return py_r end)()");
+      }
       case K::IfExp: {
         put("(");
         cond(*n.kids[1], 3);
@@ -776,6 +796,13 @@ class Emitter {
         if (k) expr(*k);
         else put("nil");
       }
+      return put(")");
+    }
+    if (idx.kind == K::Tuple) {  // T['PARA', row]: code_aster's tables count rows from 1, as aster-lite's
+      if (idx.kids.size() != 2) refuse(n, "multi-dimensional indexing is not supported");
+      expr(obj, 100);
+      put(":get(");
+      list(idx.kids);
       return put(")");
     }
     const Ty ot = typeOf(obj);
@@ -1156,6 +1183,11 @@ class Emitter {
           expr(*s.kids[1]);
         }
         return put(")");
+      case K::Block:  // the handler of try: import ... except ImportError:
+        at(s.line);
+        put("do");
+        block(s);
+        return put("end");
       case K::Import: case K::ImportFrom:
         if (scope_->function) refuse(s, "imports inside a function are not supported");
         return;
@@ -1293,11 +1325,37 @@ class Emitter {
     return c;
   }
 
+  static int lastLine(const Node& n) {
+    int last = n.line;
+    for (const auto& p : n.pieces) last = std::max(last, p.line);
+    for (const auto& k : n.kids)
+      if (k) last = std::max(last, lastLine(*k));
+    return last;
+  }
+  // `if flag:` where every assignment of flag is False (sympy_available after
+  // try: import sympy ... except ImportError): the block never runs, so it is kept
+  // as comments, untranslated.
+  bool neverRuns(const Node& condition) const {
+    if (condition.kind != K::Name || scope_->function) return false;
+    const auto f = module_.onlyFalse.find(condition.text);
+    return f != module_.onlyFalse.end() && f->second;
+  }
+
   void ifStatement(const Node& s, bool elif) {
     put(elif ? "elseif " : "if ");
     cond(*s.kids[0]);
     put(" then");
-    block(*s.kids[1]);
+    if (neverRuns(*s.kids[0]) && !s.kids[1]->kids.empty()) {
+      const int first = s.kids[1]->kids.front()->line;
+      const int last = lastLine(*s.kids[1]);
+      for (int l = first; l <= last && l <= static_cast<int>(src_.size()); ++l) {
+        const std::string& text = src_[l - 1];
+        if (text.find_first_not_of(" \t") == std::string::npos) continue;
+        comments_[l] = " " + text;
+      }
+    } else {
+      block(*s.kids[1]);
+    }
     if (s.kids.size() > 2) {
       const Node& e = *s.kids[2];
       if (e.kind == K::If) {
@@ -1341,9 +1399,12 @@ class Emitter {
   }
 
   void forStatement(const Node& s) {
-    const Node& target = *s.kids[0];
-    const Node& it = *s.kids[1];
-    const Node& body = *s.kids[2];
+    const std::string prologue = forHeader(*s.kids[0], *s.kids[1]);
+    loopBody(*s.kids[2], prologue);
+  }
+
+  // "for ... do" of `for target in it`; returns what the body must start with (unpacking).
+  std::string forHeader(const Node& target, const Node& it) {
     put("for ");
     if (isRangeCall(it)) {
       if (target.kind != K::Name) refuse(target, "unpacking a range() element");
@@ -1362,7 +1423,7 @@ class Emitter {
         put("_, " + rename(target.text) + " in ipairs(py_range");
         args(it);
         put(") do");
-        return loopBody(body);
+        return "";
       }
       put(rename(target.text) + " = ");
       if (argc == 1) put("0");
@@ -1382,7 +1443,7 @@ class Emitter {
         expr(*step);
       }
       put(" do");
-      return loopBody(body);
+      return "";
     }
     if (it.kind == K::Call && it.kids[0]->kind == K::Name && !assigned(it.kids[0]->text) &&
         (it.kids[0]->text == "enumerate" || it.kids[0]->text == "zip")) {
@@ -1398,7 +1459,7 @@ class Emitter {
       put(" in py_" + h);
       args(it);
       put(" do");
-      return loopBody(body);
+      return "";
     }
     if (it.kind == K::Call && it.kids[0]->kind == K::Attribute &&
         (it.kids[0]->text == "items" || it.kids[0]->text == "keys" || it.kids[0]->text == "values"))
@@ -1424,7 +1485,7 @@ class Emitter {
       put(")");
     }
     put(" do");
-    loopBody(body, prologue);
+    return prologue;
   }
 
   void def(const Node& s) {

@@ -114,7 +114,7 @@ class Parser {
       if (w == "for") return block.kids.push_back(forStatement()), void();
       if (w == "def") return block.kids.push_back(defStatement()), void();
       if (w == "class") fail("class definitions are not supported");
-      if (w == "try") fail("try/except is not supported");
+      if (w == "try") return block.kids.push_back(tryImport()), void();
       if (w == "with") fail("with statements are not supported");
       if (w == "async") fail("async is not supported");
     }
@@ -141,6 +141,57 @@ class Parser {
       n->kids.push_back(suite());
     }
     return n;
+  }
+
+  // try: import X ... except ImportError: ... -- X (sympy...) never exists for a
+  // translated study, so the handler is what runs: the only try translated.
+  NodePtr tryImport() {
+    const int ln = line();
+    ++i_;
+    expectOp(":");
+    if (!at(T::Newline)) fail("try/except is not supported");
+    ++i_;
+    if (!at(T::Indent)) fail("an indented block expected, found " + shown());
+    ++i_;
+    if (!atWord("import") && !atWord("from")) throw TranslateError(ln, "try/except is not supported");
+    ++skipModuleCheck_;
+    NodePtr first = smallStatement();
+    --skipModuleCheck_;
+    const std::string module = first->kind == K::Import ? first->names[0] : first->text;
+    const std::string top = module.substr(0, module.find('.'));
+    if (top == "math" || top == "code_aster" || top == "__future__") throw TranslateError(ln, "try/except is not supported");
+    // The rest of the try block never runs: skip it, token by token.
+    int depth = 1;
+    while (depth > 0 && !at(T::End)) {
+      if (at(T::Indent)) ++depth;
+      if (at(T::Dedent)) --depth;
+      ++i_;
+    }
+    if (!atWord("except")) throw TranslateError(ln, "try/except is not supported");
+    ++i_;
+    bool importError = false;
+    if (atWord("ImportError") || atWord("ModuleNotFoundError")) {
+      importError = true;
+      ++i_;
+    } else if (atOp("(")) {
+      ++i_;
+      while (!atOp(")") && !at(T::End) && !at(T::Newline)) {
+        importError = importError || atWord("ImportError") || atWord("ModuleNotFoundError") || atWord("Exception");
+        ++i_;
+      }
+      if (atOp(")")) ++i_;
+    } else if (atOp(":") || atWord("Exception")) {
+      importError = true;
+      if (atWord("Exception")) ++i_;
+    }
+    if (!importError) throw TranslateError(ln, "try/except is not supported");
+    if (atWord("as")) {
+      ++i_;
+      expectName();
+    }
+    auto handler = suite();
+    if (atWord("except") || atWord("else") || atWord("finally")) throw TranslateError(line(), "try/except is not supported beyond try: import ... except ImportError:");
+    return handler;
   }
 
   NodePtr forStatement() {
@@ -331,6 +382,7 @@ class Parser {
 
   // Only math, __future__ and code_aster's commands exist in a translated study.
   void checkModule(const std::string& module) const {
+    if (skipModuleCheck_) return;
     const std::string top = module.substr(0, module.find('.'));
     if (top == "math" || top == "__future__" || top == "code_aster") return;
     if (top == "numpy") fail("numpy is not supported");
@@ -606,13 +658,47 @@ class Parser {
     }
     expectOp(")");
   }
+  // [element for target in iterable if condition]: one for, any number of ifs.
+  NodePtr comprehension(NodePtr element, int ln) {
+    ++i_;  // for
+    auto n = std::make_unique<Node>(K::ListComp, ln);
+    n->kids.push_back(std::move(element));
+    n->kids.push_back(targetList());
+    if (!atWord("in")) fail("'in' expected in a list comprehension, found " + shown());
+    ++i_;
+    n->kids.push_back(orTest());
+    while (atWord("if")) {
+      const int cl = line();
+      ++i_;
+      auto c = orTest();
+      if (n->kids.size() == 3) {
+        n->kids.push_back(std::move(c));
+      } else {
+        n->kids[3] = binary(K::BoolOp, "and", std::move(n->kids[3]), std::move(c), cl);
+      }
+    }
+    if (atWord("for")) throw TranslateError(ln, "list comprehensions with more than one for are not supported");
+    expectOp("]");
+    return n;
+  }
+
   NodePtr subscript() {
     const int ln = line();
     NodePtr lower, upper, step;
     if (!atOp(":")) lower = test();
     if (!atOp(":")) {
-      if (atOp(",")) fail("multi-dimensional indexing is not supported");
-      return lower;
+      if (!atOp(",")) return lower;
+      // T['PARA', 1]: a code_aster table's cell (column, row)
+      auto pair = std::make_unique<Node>(K::Tuple, ln);
+      pair->kids.push_back(std::move(lower));
+      while (atOp(",")) {
+        ++i_;
+        if (atOp("]")) break;
+        if (atOp(":")) fail("multi-dimensional indexing is not supported");
+        pair->kids.push_back(test());
+        if (atOp(":")) fail("multi-dimensional indexing is not supported");
+      }
+      return pair;
     }
     ++i_;
     if (!atOp("]") && !atOp(":") && !atOp(",")) upper = test();
@@ -689,6 +775,7 @@ class Parser {
       while (!atOp("]")) {
         if (atOp("*")) fail("starred elements are not supported");
         list->kids.push_back(test());
+        if (atWord("for") && list->kids.size() == 1) return comprehension(std::move(list->kids[0]), ln);
         if (atWord("for")) throw TranslateError(ln, "list comprehensions are not supported");
         if (!atOp(",")) break;
         ++i_;
@@ -720,6 +807,7 @@ class Parser {
   const std::vector<Token>& t_;
   std::size_t i_ = 0;
   int depth_ = 0;
+  int skipModuleCheck_ = 0;
 };
 
 }  // namespace

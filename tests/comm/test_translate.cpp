@@ -277,6 +277,40 @@ TEST(Translate, CoAndPositionalCalls) {
   EXPECT_EQ(line(lua("DETRUIRE(CONCEPT=_F(NOM=(A, B)))\n"), 1), "DETRUIRE{CONCEPT = {NOM = {A, B}}}");
 }
 
+TEST(Translate, ListComprehensions) {
+  // Python: [0.5, 0.25, 0.125] [1, 9] ['a!', 'b!']
+  EXPECT_EQ(run("N = 3\nT = [(1. / 2. ** (i + 1)) for i in range(N)]\nO = [x * x for x in [1, 2, 3] if x % 2 if x > 0]\n"
+                "print(T, O, [s + '!' for s in ('a', 'b')])\n"),
+            "[0.5, 0.25, 0.125] [1, 9] ['a!', 'b!']\n");
+}
+
+TEST(Translate, TableCellsByColumnAndRow) {
+  // code_aster's T['PARA', row] counts rows from 1, as aster-lite's TABLE:get.
+  EXPECT_EQ(line(lua("v = TAB['VALE_NORM', 1]\n"), 1), "v = TAB:get('VALE_NORM', 1)");
+  EXPECT_EQ(error("v = A[:, 0]\n"), "t.comm:1: multi-dimensional indexing is not supported");
+}
+
+TEST(Translate, OptionalImportRunsItsHandler) {
+  // sympy never exists for a translated study: the except ImportError block is what runs,
+  // and the blocks guarded by the flag it sets are kept as comments.
+  const std::string src =
+      "try:\n"
+      "    import sympy\n"
+      "    ok = True\n"
+      "except ImportError:\n"
+      "    ok = False\n"
+      "if ok:\n"
+      "    X = sympy.symbols('X')\n"
+      "else:\n"
+      "    X = 'none'\n"
+      "print(ok, X)\n";
+  EXPECT_EQ(run(src), "False none\n");
+  const std::string out = lua(src);
+  EXPECT_EQ(line(out, 7), "--     X = sympy.symbols('X')");
+  EXPECT_EQ(error("try:\n    x = 1\nexcept:\n    pass\n"), "t.comm:1: try/except is not supported");
+  EXPECT_EQ(error("try:\n    import math\nexcept ImportError:\n    pass\n"), "t.comm:1: try/except is not supported");
+}
+
 TEST(Translate, NoneSlotsFilledByIndex) {
   EXPECT_EQ(run("M = [None] * 3\nfor i in range(3):\n    M[i] = i * i\nprint(M, len(M))\n"), "[0, 1, 4] 3\n");
 }
@@ -285,7 +319,8 @@ TEST(Translate, RefusesWhatItCannotTranslateWithFileAndLine) {
   EXPECT_EQ(error("x = 1\nimport numpy as np\n"), "t.comm:2: numpy is not supported");
   EXPECT_EQ(error("import os\n"), "t.comm:1: import of os is not supported (only math and code_aster's commands)");
   EXPECT_EQ(error("\nclass A:\n    pass\n"), "t.comm:2: class definitions are not supported");
-  EXPECT_EQ(error("L = [i for i in range(3)]\n"), "t.comm:1: list comprehensions are not supported");
+  EXPECT_EQ(error("L = [i * j for i in range(3)\n     for j in range(2)]\n"),
+            "t.comm:1: list comprehensions with more than one for are not supported");
   EXPECT_EQ(error("try:\n    x = 1\nexcept:\n    pass\n"), "t.comm:1: try/except is not supported");
   EXPECT_EQ(error("INCLUDE(UNITE=91)\n"), "t.comm:1: INCLUDE is not supported");
   EXPECT_EQ(error("EXEC_LOGICIEL(LOGICIEL='ls')\n"), "t.comm:1: EXEC_LOGICIEL is not supported");
