@@ -110,7 +110,12 @@ class Emitter {
       std::string& l = out_[line];
       while (!l.empty() && (l.back() == ' ' || l.back() == '\t')) l.pop_back();
       const bool blank = l.find_first_not_of(" \t") == std::string::npos;
-      l += (blank ? "--" : " --") + text;
+      // A line comment stays one: no "--[[" opening a long comment, no carriage return
+      // (a line break for Lua) inside it.
+      std::string kept = text;
+      std::replace(kept.begin(), kept.end(), '\r', ' ');
+      if (!kept.empty() && kept[0] == '[') kept.insert(0, " ");
+      l += (blank ? "--" : " --") + kept;
     }
     const std::string pre = prelude(used_);
     if (!pre.empty()) out_[1] = pre + out_[1];
@@ -1197,13 +1202,11 @@ class Emitter {
 
   void expressionStatement(const Node& s) {
     const Node& e = *s.kids[0];
-    if (e.kind == K::String) {  // a docstring: kept as comments
-      for (const auto& p : e.pieces) {
-        std::string t = p.text;
-        while (!t.empty() && t.back() == '\n') t.pop_back();
-        if (t.find_first_not_of(" \t") == std::string::npos) continue;
-        auto& c = comments_[p.line];
-        c = " " + t + (c.empty() ? "" : " #" + c);
+    if (e.kind == K::String) {  // a docstring (or a string used as a block comment): its lines as comments
+      const int last = std::min(lastLine(e), static_cast<int>(src_.size()));
+      for (int l = e.line; l <= last; ++l) {
+        const std::string& text = src_[l - 1];
+        if (text.find_first_not_of(" \t") != std::string::npos) comments_[l] = " " + text;
       }
       return;
     }

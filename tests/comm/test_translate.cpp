@@ -94,6 +94,15 @@ TEST(Translate, KeepsEveryLineWhereItWas) {
   EXPECT_NE(run(src).find("t.comm:7:"), std::string::npos) << run(src);
 }
 
+TEST(Translate, CommentsStayLineComments) {
+  // "#[[" must not open a Lua long comment that would swallow the next lines.
+  EXPECT_EQ(run("#[[ not a block\nx = 1 #[==[\nprint(x)\n"), "1\n");
+  // A string used as a block comment: its source lines, escapes and all, as comments.
+  const std::string out = lua("'''\nf.write('%E\\n' % x)\n'''\ny = 2\n");
+  EXPECT_EQ(line(out, 2), "-- f.write('%E\\n' % x)");
+  EXPECT_EQ(line(out, 4), "y = 2");
+}
+
 TEST(Translate, FortranExponentsAndIntegers) {
   const std::string out = lua("a = 1.D-3\nb = 1.d0\nc = 2.E+5\nd = 10\ne = .5\n");
   EXPECT_EQ(line(out, 1), "a = 1.0e-3");
