@@ -642,7 +642,7 @@ class Emitter {
       case K::Compare: return compare(n);
       case K::ListComp: {
         put("(function() local py_r = {}");
-        const std::string prologue = forHeader(*n.kids[1], *n.kids[2]);
+        const std::string prologue = forHeader(*n.kids[1], *n.kids[2], true);
         put(prologue);
         if (n.kids.size() > 3) {
           put(" if");
@@ -1138,7 +1138,12 @@ class Emitter {
 
   // ---------------------------------------------------------------- statements
   void block(const Node& b) {
-    for (std::size_t i = 0; i < b.kids.size(); ++i) statement(*b.kids[i], i + 1 == b.kids.size());
+    blocks_.emplace_back(&b, 0);
+    for (std::size_t i = 0; i < b.kids.size(); ++i) {
+      blocks_.back().second = i;
+      statement(*b.kids[i], i + 1 == b.kids.size());
+    }
+    blocks_.pop_back();
   }
   void statement(const Node& s, bool last) {
     at(s.line);
@@ -1401,13 +1406,38 @@ class Emitter {
     return false;
   }
 
+  static bool mentions(const Node& n, const std::string& name) {
+    if (n.kind == K::Name && n.text == name) return true;
+    for (const auto& k : n.kids)
+      if (k && mentions(*k, name)) return true;
+    return false;
+  }
+  // Whether a statement after the one being emitted, in this block or an enclosing one
+  // (up to the function's body), names `name`.
+  bool usedAfter(const std::string& name) const {
+    for (auto b = blocks_.rbegin(); b != blocks_.rend(); ++b) {
+      for (std::size_t i = b->second + 1; i < b->first->kids.size(); ++i)
+        if (mentions(*b->first->kids[i], name)) return true;
+      if (b->first == functionBody_) break;
+    }
+    return false;
+  }
+
   void forStatement(const Node& s) {
     const std::string prologue = forHeader(*s.kids[0], *s.kids[1]);
     loopBody(*s.kids[2], prologue);
   }
 
   // "for ... do" of `for target in it`; returns what the body must start with (unpacking).
-  std::string forHeader(const Node& target, const Node& it) {
+  std::string forHeader(const Node& target, const Node& it, bool comprehension = false) {
+    // Python's loop variable outlives the loop, Lua's does not: when the code after
+    // the loop reads it, the loop runs on a py_loop_ variable copied into it.
+    std::string kept;
+    auto loopVar = [&](const Node& name) {
+      if (comprehension || !usedAfter(name.text)) return rename(name.text);
+      kept += " " + rename(name.text) + " = py_loop_" + name.text;
+      return "py_loop_" + name.text;
+    };
     put("for ");
     if (isRangeCall(it)) {
       if (target.kind != K::Name) refuse(target, "unpacking a range() element");
@@ -1423,12 +1453,12 @@ class Emitter {
       }
       if (sign == 0) {  // step known only at run time
         helper("py_range");
-        put("_, " + rename(target.text) + " in ipairs(py_range");
+        put("_, " + loopVar(target) + " in ipairs(py_range");
         args(it);
         put(") do");
-        return "";
+        return kept;
       }
-      put(rename(target.text) + " = ");
+      put(loopVar(target) + " = ");
       if (argc == 1) put("0");
       else expr(*it.kids[1]);
       put(", ");
@@ -1446,7 +1476,7 @@ class Emitter {
         expr(*step);
       }
       put(" do");
-      return "";
+      return kept;
     }
     if (it.kind == K::Call && it.kids[0]->kind == K::Name && !assigned(it.kids[0]->text) &&
         (it.kids[0]->text == "enumerate" || it.kids[0]->text == "zip")) {
@@ -1455,14 +1485,14 @@ class Emitter {
       if (target.kind != K::Tuple) refuse(target, "for over " + h + "() needs one name per value");
       for (std::size_t i = 0; i < target.kids.size(); ++i) {
         if (i) put(", ");
-        put(rename(target.kids[i]->text));
+        put(loopVar(*target.kids[i]));
       }
       if (h == "enumerate" && target.kids.size() != 2) refuse(target, "for over enumerate() needs two names");
       helper("py_" + h);
       put(" in py_" + h);
       args(it);
       put(" do");
-      return "";
+      return kept;
     }
     if (it.kind == K::Call && it.kids[0]->kind == K::Attribute &&
         (it.kids[0]->text == "items" || it.kids[0]->text == "keys" || it.kids[0]->text == "values"))
@@ -1470,10 +1500,12 @@ class Emitter {
     const bool knownList = it.kind == K::Tuple || it.kind == K::List || typeOf(it) == Ty::List;
     std::string prologue;
     if (target.kind == K::Name) {
-      put("_, " + rename(target.text) + " in ");
+      put("_, " + loopVar(target) + " in ");
     } else {
       put("_, py_item in ");
-      prologue = " local ";
+      bool outlives = false;
+      for (const auto& k : target.kids) outlives = outlives || (!comprehension && usedAfter(k->text));
+      prologue = outlives ? " " : " local ";
       for (std::size_t i = 0; i < target.kids.size(); ++i) prologue += (i ? ", " : "") + rename(target.kids[i]->text);
       prologue += " = table.unpack(py_item)";
     }
@@ -1488,7 +1520,7 @@ class Emitter {
       put(")");
     }
     put(" do");
-    return prologue;
+    return prologue + kept;
   }
 
   void def(const Node& s) {
@@ -1513,6 +1545,8 @@ class Emitter {
     }
     Scope* saved = scope_;
     scope_ = &scope;
+    const Node* savedBody = functionBody_;
+    functionBody_ = &body;
     std::vector<Loop> outerLoops;
     outerLoops.swap(loops_);
     for (std::size_t i = 0; i < s.names.size(); ++i) {
@@ -1525,6 +1559,7 @@ class Emitter {
     block(body);
     put("end");
     loops_.swap(outerLoops);
+    functionBody_ = savedBody;
     scope_ = saved;
   }
 
@@ -1538,6 +1573,8 @@ class Emitter {
   Scope module_;
   Scope* scope_ = &module_;
   std::vector<Loop> loops_;
+  std::vector<std::pair<const Node*, std::size_t>> blocks_;  // the blocks being emitted, and where
+  const Node* functionBody_ = nullptr;                         // the body of the function being emitted
 };
 
 }  // namespace

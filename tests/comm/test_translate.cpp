@@ -257,6 +257,24 @@ TEST(Translate, LoopsBreakContinueWhile) {
   EXPECT_EQ(run(src), "1342460a1b1x2yhi\n");
 }
 
+TEST(Translate, LoopVariablesOutliveTheirLoop) {
+  // Python: the loop variable keeps its last value after the loop (also in a function).
+  const std::string src =
+      "for i in range(3):\n"
+      "    pass\n"
+      "for x in ['a', 'b']:\n"
+      "    pass\n"
+      "def f():\n"
+      "    for k in range(1, 5):\n"
+      "        if k == 3:\n"
+      "            break\n"
+      "    return k\n"
+      "L = [i * 10 for i in range(2)]\n"
+      "print(i, x, f(), L)\n";
+  EXPECT_EQ(run(src), "2 b 3 [0, 10]\n");
+  EXPECT_EQ(line(lua("for i in range(3):\n    pass\n"), 1), "for i = 0, 2 do");  // not read after: plain
+}
+
 TEST(Translate, FunctionsWithLocalsDefaultsAndKeywords) {
   const std::string src =
       "y = 100\n"
