@@ -931,6 +931,8 @@ class Emitter {
     if (foreign_.count(s)) refuse(n, "code_aster's Python API (" + s + ") is not supported");
     const std::size_t pos = positional(n);
     if (hasKeywords(n) && pos) refuse(n, "'" + s + "' called with both positional and keyword arguments");
+    if (hasKeywords(n) && !isCommandName(s))
+      refuse(n, "keyword arguments to " + s + "(), which is neither a command nor a function of this file");
     if (hasKeywords(n) || (pos == 0 && isCommandName(s))) {
       put(rename(s));
       return keywordTable(n);

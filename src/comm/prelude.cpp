@@ -128,7 +128,7 @@ const std::vector<Helper>& helpers() {
       {"py_mod", {"py_format"},
        "local function py_mod(a, b) if type(a) == 'string' then return py_format(a, b) end return a % b end"},
       {"py_pow", {},
-       "local function py_pow(a, b) if math.type(a) == 'integer' and math.type(b) == 'integer' and b >= 0 then "
+       "local function py_pow(a, b) if math.type(a) == 'integer' and math.type(b) == 'integer' and b >= 0 and math.abs(a + 0.0) ^ b < 2 ^ 63 then "
        "local r = 1 for _ = 1, b do r = r * a end return r end return a ^ b end"},
       {"py_eq", {},
        "local function py_eq(a, b) if type(a) ~= 'table' or type(b) ~= 'table' then return a == b end "

@@ -193,10 +193,11 @@ TEST(Translate, PlusOnStringsAndNumbers) {
 }
 
 TEST(Translate, ArithmeticFollowsPython) {
-  // Python: 3 -4 2 -2 1024 1.4142135623730951 2 4 -3 0.1 0.3333333333333333 8.0 3.5 -9
+  // Python: 3 -4 2 -2 1024 1.4142135623730951 2 4 -3 0.1 0.3333333333333333 8.0 3.5 -9, and 2 ** 64
+  // beyond 64-bit integers: Python's unbounded integer, here the nearest float (never a wrapped one).
   EXPECT_EQ(run("print(7 // 2, -7 // 2, -7 % 3, 7 % -3, 2 ** 10, 2 ** 0.5, round(2.5), round(3.5), int(-3.7),"
-                " str(0.1), str(1 / 3), 2.0 ** 3, 7 / 2, -3 ** 2)\n"),
-            "3 -4 2 -2 1024 1.4142135623730951 2 4 -3 0.1 0.3333333333333333 8.0 3.5 -9\n");
+                " str(0.1), str(1 / 3), 2.0 ** 3, 7 / 2, -3 ** 2, 2 ** 64)\n"),
+            "3 -4 2 -2 1024 1.4142135623730951 2 4 -3 0.1 0.3333333333333333 8.0 3.5 -9 1.8446744073709552e+19\n");
   EXPECT_EQ(run("x = 2\nprint(1 < x < 3, 1 < x < 2, x != 2, not x == 3, x if x > 1 else -x)\n"), "True False False True 2\n");
   EXPECT_EQ(run("print(abs(-2), min(3, 1, 2), max([4, 9, 2]), float('2.5'), int('12'), round(2.675, 2), sum([1, 2, 3]))\n"),
             "2 1 9 2.5 12 2.67 6\n");
@@ -354,6 +355,8 @@ TEST(Translate, RefusesWhatItCannotTranslateWithFileAndLine) {
   EXPECT_EQ(error("T = TAB.EXTR_TABLE()\n"), "t.comm:1: the method .EXTR_TABLE() is not supported");
   EXPECT_EQ(error("v = R.getValues()\n"), "t.comm:1: the method .getValues() is not supported");
   EXPECT_EQ(error("f = lambda x: x\n"), "t.comm:1: lambda is not supported");
+  EXPECT_EQ(error("x = helper(a=1)\n"),
+            "t.comm:1: keyword arguments to helper(), which is neither a command nor a function of this file");
   EXPECT_EQ(error("def f():\n    global a\n"), "t.comm:2: global declarations are not supported");
   EXPECT_EQ(error("x = (1 +\n 2j)\n"), "t.comm:2: complex numbers are not supported");
   EXPECT_EQ(error("print 'a'\n"), "t.comm:1: the Python 2 print statement is not supported (print(...) is)");
