@@ -161,6 +161,21 @@ class Emitter {
   // ---------------------------------------------------------------- names
   std::string rename(const std::string& name) const {
     if (kLuaReserved.count(name) || isHelperName(name)) return name + "_";
+    // Python allows non-ASCII names (déplacement), Lua does not: each such byte as _xHH.
+    if (std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; })) {
+      std::string ascii;
+      for (const char c : name) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x80) {
+          ascii += c;
+        } else {
+          char hex[8];
+          std::snprintf(hex, sizeof hex, "_x%02X", u);
+          ascii += hex;
+        }
+      }
+      return ascii;
+    }
     return name;
   }
   bool assigned(const std::string& name) const {

@@ -294,6 +294,8 @@ TEST(Translate, FunctionsWithLocalsDefaultsAndKeywords) {
 TEST(Translate, LuaKeywordsAsNamesAreRenamed) {
   EXPECT_EQ(run("end = 3\nlocal = end + 1\nnil = local * 2\nfunction = [end, local, nil]\nprint(function)\n"), "[3, 4, 8]\n");
   EXPECT_EQ(line(lua("end = 3\n"), 1), "end_ = 3");
+  // Python's non-ASCII names, which Lua has not.
+  EXPECT_EQ(run("d\xC3\xA9placement = 2\nprint(d\xC3\xA9placement * 3)\n"), "6\n");
 }
 
 TEST(Translate, KeywordsNamedLikeLuaKeywordsStayKeys) {
