@@ -788,6 +788,20 @@ class Emitter {
     expr(*n.kids[1], right || assoc ? f.prec : f.prec + 1);
   }
 
+  // An expression indexed or called in Lua: a table constructor or a string literal
+  // needs parentheses there ({1, 2}[1] is not Lua).
+  void prefix(const Node& n) {
+    const bool literal = n.kind == K::Tuple || n.kind == K::List || n.kind == K::Dict || n.kind == K::String;
+    if (literal) {
+      at(n.line);
+      put("(");
+      expr(n);
+      put(")");
+      return;
+    }
+    expr(n, 100);
+  }
+
   void attribute(const Node& n) {
     const Node& obj = *n.kids[0];
     if (isMathModule(obj)) {
@@ -799,7 +813,7 @@ class Emitter {
     }
     if (obj.kind == K::Name && foreign_.count(obj.text) && !assigned(obj.text))
       refuse(n, "code_aster's Python API (" + obj.text + "." + n.text + ") is not supported");
-    expr(obj, 100);
+    prefix(obj);
     const std::string k = key(n.text);
     put(k[0] == '[' ? k : "." + k);
   }
@@ -820,30 +834,30 @@ class Emitter {
     }
     if (idx.kind == K::Tuple) {  // T['PARA', row]: code_aster's tables count rows from 1, as aster-lite's
       if (idx.kids.size() != 2) refuse(n, "multi-dimensional indexing is not supported");
-      expr(obj, 100);
+      prefix(obj);
       put(":get(");
       list(idx.kids);
       return put(")");
     }
     const Ty ot = typeOf(obj);
     if (idx.kind == K::String) {
-      expr(obj, 100);
+      prefix(obj);
       const std::string k = key(idx.text);
       return put(k[0] == '[' ? k : "." + k);
     }
     if (ot == Ty::Dict) {
-      expr(obj, 100);
+      prefix(obj);
       put("[");
       expr(idx);
       return put("]");
     }
     if (ot == Ty::List) {
       if (idx.kind == K::Number && !idx.isFloat) {
-        expr(obj, 100);
+        prefix(obj);
         return put("[" + std::to_string(std::stoll(idx.text) + 1) + "]");
       }
       if (typeOf(idx) == Ty::Index) {
-        expr(obj, 100);
+        prefix(obj);
         put("[");
         expr(idx, 6);
         return put(" + 1]");
@@ -851,7 +865,7 @@ class Emitter {
       if (obj.kind == K::Name && idx.kind == K::Unary && idx.text == "-" && idx.kids[0]->kind == K::Number &&
           !idx.kids[0]->isFloat) {
         const long long k = std::stoll(idx.kids[0]->text);
-        expr(obj, 100);
+        prefix(obj);
         const std::string len = "#" + rename(obj.text);
         return put("[" + len + (k == 1 ? "" : " - " + std::to_string(k - 1)) + "]");
       }
@@ -1251,7 +1265,7 @@ class Emitter {
       if (idx.kind == K::Slice) refuse(t, "slice assignment is not supported");
       const Ty ot = typeOf(obj);
       if (idx.kind == K::String || ot == Ty::Dict) {
-        expr(obj, 100);
+        prefix(obj);
         if (idx.kind == K::String) {
           const std::string k = key(idx.text);
           return put(k[0] == '[' ? k : "." + k);
@@ -1261,7 +1275,7 @@ class Emitter {
         return put("]");
       }
       if (ot == Ty::List && (typeOf(idx) == Ty::Index)) {
-        expr(obj, 100);
+        prefix(obj);
         put("[");
         if (idx.kind == K::Number) {
           put(std::to_string(std::stoll(idx.text) + 1));

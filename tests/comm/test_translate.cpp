@@ -205,6 +205,34 @@ TEST(Translate, ArithmeticFollowsPython) {
             "True False None [1, 'a', 2.0] 1e+16 1.5e-07 -0.0\n");
 }
 
+TEST(Translate, MixedConstructsAgainstPython) {
+  // Python 3 prints: 1 2 3 3 None 3 2 abcc 3 5 False 1 A-5    x|y  |x 5.5 [0, 0, 0, 1] ABCx1-22
+  const std::string src =
+      "x = -(-1); y = - -2\n"
+      "a = b = 3\n"
+      "if x: pass\n"
+      "def f(): pass\n"
+      "def g(n):\n"
+      "    if n > 1:\n"
+      "        return n\n"
+      "    return -n\n"
+      "for i in range(3): continue\n"
+      "while False: break\n"
+      "s = 'a' 'b' + \"c\" * 2\n"
+      "v = {'a': 1, 'b c': 2}\n"
+      "w = v['a'] + v['b c']\n"
+      "z = [1, 2][0] + (3, 4)[-1]\n"
+      "k = not (x == 1)\n"
+      "m = x if y else (z if a else b)\n"
+      "n = \"%(a)s-%(b)d\" % {'a': 'A', 'b': 5}\n"
+      "o = '{0:>4}|{1:<3}|{0}'.format('x', 'y')\n"
+      "p = 10 % 3 + 10.5 // 2 - 2 ** -1\n"
+      "q = [0] * 3 + [1]\n"
+      "r = 'abc'.upper() + ' x '.strip() + '-'.join(['1', '2']) + str(len('abc'.split('b')))\n"
+      "print(x, y, a, b, f(), g(3), g(-2), s, w, z, k, m, n, o, p, q, r)\n";
+  EXPECT_EQ(run(src), "1 2 3 3 None 3 2 abcc 3 5 False 1 A-5    x|y  |x 5.5 [0, 0, 0, 1] ABCx1-22\n");
+}
+
 TEST(Translate, MathModule) {
   EXPECT_EQ(run("import math\nprint(math.sqrt(4.), math.pi == 3.141592653589793, math.log10(100.), math.fabs(-3),"
                 " math.degrees(math.pi), math.pow(2, 3), math.atan2(1., 1.) * 4 == math.pi, math.floor(2.5), math.e)\n"),
