@@ -902,12 +902,24 @@ class Emitter {
     list(call.kids, from);
     put(")");
   }
+  static bool hasUnpacking(const Node& call) {
+    for (std::size_t i = 1; i < call.kids.size(); ++i)
+      if (call.kids[i]->kind == K::Keyword && call.kids[i]->text == "**") return true;
+    return false;
+  }
+  // The keywords of a command call as a table; with **d, the table and each d merged.
   void keywordTable(const Node& call) {
+    const bool merge = hasUnpacking(call);
+    if (merge) {
+      helper("py_kwargs");
+      put("py_kwargs(");
+    }
     put("{");
     bool first = true;
     for (std::size_t i = 1; i < call.kids.size(); ++i) {
       const Node& kw = *call.kids[i];
       if (kw.kind != K::Keyword) refuse(kw, "a positional argument to a command (code_aster's commands take keywords)");
+      if (kw.text == "**") continue;
       if (!first) put(", ");
       first = false;
       at(kw.line);
@@ -915,6 +927,14 @@ class Emitter {
       expr(*kw.kids[0]);
     }
     put("}");
+    if (!merge) return;
+    for (std::size_t i = 1; i < call.kids.size(); ++i) {
+      const Node& kw = *call.kids[i];
+      if (kw.kind != K::Keyword || kw.text != "**") continue;
+      put(", ");
+      expr(*kw.kids[0]);
+    }
+    put(")");
   }
 
   // True when the call translates to a Lua function call (a valid statement).
@@ -964,13 +984,17 @@ class Emitter {
       refuse(n, "keyword arguments to " + s + "(), which is neither a command nor a function of this file");
     if (hasKeywords(n) || (pos == 0 && isCommandName(s))) {
       put(rename(s));
-      return keywordTable(n);
+      if (!hasUnpacking(n)) return keywordTable(n);
+      put("(");
+      keywordTable(n);
+      return put(")");
     }
     put(rename(s));
     args(n);
   }
 
   void userCall(const Node& n, const Node& def) {
+    if (hasUnpacking(n)) refuse(n, "** argument unpacking is only supported in command calls");
     put(rename(def.text));
     if (!hasKeywords(n)) {
       if (positional(n) > def.names.size()) refuse(n, def.text + "() given too many arguments");
@@ -1029,6 +1053,7 @@ class Emitter {
 
   void builtin(const Node& n, const std::string& b) {
     const std::size_t argc = n.kids.size() - 1;
+    if (hasUnpacking(n)) refuse(n, "** argument unpacking is only supported in command calls");
     if (b == "dict") {
       if (positional(n)) refuse(n, "dict() with positional arguments is not supported");
       helper("py_dict");
@@ -1103,6 +1128,7 @@ class Emitter {
     if (obj.kind == K::Name && foreign_.count(obj.text) && !assigned(obj.text))
       refuse(n, "code_aster's Python API (" + obj.text + "." + m + ") is not supported");
     const std::size_t argc = n.kids.size() - 1;
+    if (hasUnpacking(n)) refuse(n, "** argument unpacking is only supported in command calls");
     if (m == "format") {
       helper("py_fmt");
       put("py_fmt(");

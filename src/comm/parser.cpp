@@ -639,8 +639,18 @@ class Parser {
     const Depth d(*this);
     bool keywords = false;
     while (!atOp(")")) {
-      if (atOp("*") || atOp("**"))
-        fail(std::string(atOp("*") ? "*" : "**") + " argument unpacking is not supported");
+      if (atOp("*")) fail("* argument unpacking is not supported");
+      if (atOp("**")) {  // CMD(**keywords): a Keyword named "**"
+        auto kw = std::make_unique<Node>(K::Keyword, line());
+        ++i_;
+        kw->text = "**";
+        kw->kids.push_back(test());
+        call.kids.push_back(std::move(kw));
+        keywords = true;
+        if (!atOp(",")) break;
+        ++i_;
+        continue;
+      }
       if (at(T::Name) && peek(1).kind == T::Op && peek(1).text == "=") {
         auto kw = std::make_unique<Node>(K::Keyword, line());
         kw->text = next().text;

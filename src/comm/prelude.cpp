@@ -19,6 +19,9 @@ const std::vector<Helper>& helpers() {
       {"py_dict", {"py_dictmt"}, "local function py_dict(t) return setmetatable(t, py_dictmt) end"},
       {"py_slots", {},
        "local function py_slots(n) return setmetatable({}, {__len = function() return n end}) end"},
+      {"py_kwargs", {},
+       "local function py_kwargs(t, ...) for i = 1, select('#', ...) do for k, v in pairs((select(i, ...))) do "
+       "if t[k] ~= nil then error(\"got multiple values for keyword argument '\" .. tostring(k) .. \"'\", 2) end t[k] = v end end return t end"},
       {"py_truth", {},
        "local function py_truth(v) if v == nil or v == false or v == 0 or v == '' then return false end "
        "if type(v) == 'table' and next(v) == nil then return false end return true end"},

@@ -330,6 +330,15 @@ TEST(Translate, KeywordsNamedLikeLuaKeywordsStayKeys) {
   EXPECT_EQ(line(lua("X = CMD(end=1, and_=2)\n"), 1), "X = CMD{['end'] = 1, and_ = 2}");
 }
 
+TEST(Translate, KeywordUnpackingInCommandCalls) {
+  EXPECT_EQ(line(lua("TEST_RESU(**motclf)\n"), 1).substr(line(lua("TEST_RESU(**motclf)\n"), 1).rfind("TEST_RESU")),
+            "TEST_RESU(py_kwargs({}, motclf))");
+  // The command receives the keywords of the call and of the dict together.
+  EXPECT_EQ(run("d = {'A': 1}\nX = CMD(B=2, **d)\nY = _F(**d)\nprint(X['A'] + X['B'], Y['A'])\n"), "3 1\n");
+  EXPECT_NE(run("d = {'A': 1}\nX = CMD(A=2, **d)\n").find("multiple values for keyword argument 'A'"), std::string::npos);
+  EXPECT_EQ(error("def f(a):\n    return a\nx = f(**d)\n"), "t.comm:3: ** argument unpacking is only supported in command calls");
+}
+
 TEST(Translate, CoAndPositionalCalls) {
   EXPECT_EQ(line(lua("MACRO(RESU=CO('R'))\n"), 1), "MACRO{RESU = CO('R')}");
   EXPECT_EQ(line(lua("DETRUIRE(CONCEPT=_F(NOM=(A, B)))\n"), 1), "DETRUIRE{CONCEPT = {NOM = {A, B}}}");
