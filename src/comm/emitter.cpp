@@ -96,6 +96,9 @@ class Emitter {
       : src_(src), comments_(comments) {}
 
   std::string run(const Node& file) {
+    // code_aster runs a command file after `from math import *` (its legacy
+    // auto-import): math's names are there unless the file binds them itself.
+    for (const auto& [name, _] : mathNames()) bareMath_[name] = name;
     imports(file);
     module_.function = false;
     infer(file, module_);

@@ -238,6 +238,8 @@ TEST(Translate, MathModule) {
                 " math.degrees(math.pi), math.pow(2, 3), math.atan2(1., 1.) * 4 == math.pi, math.floor(2.5), math.e)\n"),
             "2.0 True 2.0 3.0 180.0 8.0 True 2 2.718281828459045\n");
   EXPECT_EQ(run("from math import *\nprint(sqrt(9.), cos(0.), pi > 3, exp(0.))\n"), "3.0 1.0 True 1.0\n");
+  // Without an import too, as code_aster runs command files; a name the file binds is its own.
+  EXPECT_EQ(run("print(sqrt(4.), pi > 3)\ne = 5\nprint(e)\n"), "2.0 True\n5\n");
   EXPECT_EQ(line(lua("from math import *\nx = sqrt(2.) * pi\n"), 2), "x = math.sqrt(2.0) * math.pi");
   EXPECT_EQ(error("import math\nx = math.gamma(2.)\n"), "t.comm:2: math.gamma is not supported");
 }
