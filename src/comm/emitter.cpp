@@ -720,7 +720,11 @@ class Emitter {
       put(f.helper + "(");
       expr(*n.kids[0]);
       put(", ");
+      // 'fmt' % [a, b] formats the list as one value: only a tuple holds the arguments.
+      const bool oneList = (f.helper == "py_format" || f.helper == "py_mod") && n.kids[1]->kind == K::List;
+      if (oneList) put("{");
       expr(*n.kids[1]);
+      if (oneList) put("}");
       return put(")");
     }
     const bool right = f.op == "^";

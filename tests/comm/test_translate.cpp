@@ -177,6 +177,8 @@ TEST(Translate, PercentFormattingAndFormat) {
   EXPECT_EQ(run("print('%d|%5.2f|%s|%r|%-3s|%e|%%' % (3, 3.14159, 'a', 'b', 'x', 1234.5))\n"),
             "3| 3.14|a|'b'|x  |1.234500e+03|%\n");
   EXPECT_EQ(run("print('n=%d' % 7, 'v=%g' % 0.5)\n"), "n=7 v=0.5\n");
+  // A list after % is one value (a tuple holds the arguments): Python prints L=[5] and 1-2.
+  EXPECT_EQ(run("print('L=%s' % [5], '%d-%d' % (1, 2))\n"), "L=[5] 1-2\n");
   EXPECT_EQ(run("print('{} {:>5} {:.2e} {name} {0}'.format(1, 'x', 12345.678, name='n'))\n"), "1     x 1.23e+04 n 1\n");
   EXPECT_EQ(run("print('{:6.3f}|{:<4}|{:03d}'.format(3.14159, 'ab', 7))\n"), " 3.142|ab  |007\n");
   // x % y with x unknown: decided when the study runs (format for strings, modulo for numbers).
