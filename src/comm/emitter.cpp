@@ -1409,18 +1409,23 @@ class Emitter {
     return false;
   }
 
-  static bool mentions(const Node& n, const std::string& name) {
-    if (n.kind == K::Name && n.text == name) return true;
+  static void mentioned(const Node& n, std::size_t index, std::map<std::string, std::size_t>& last) {
+    if (n.kind == K::Name) last[n.text] = index;
     for (const auto& k : n.kids)
-      if (k && mentions(*k, name)) return true;
-    return false;
+      if (k) mentioned(*k, index, last);
   }
   // Whether a statement after the one being emitted, in this block or an enclosing one
-  // (up to the function's body), names `name`.
-  bool usedAfter(const std::string& name) const {
+  // (up to the function's body), names `name`. Each block's last mention of each name
+  // is found once, so that many loops in a long file stay linear.
+  bool usedAfter(const std::string& name) {
     for (auto b = blocks_.rbegin(); b != blocks_.rend(); ++b) {
-      for (std::size_t i = b->second + 1; i < b->first->kids.size(); ++i)
-        if (mentions(*b->first->kids[i], name)) return true;
+      auto it = lastMention_.find(b->first);
+      if (it == lastMention_.end()) {
+        it = lastMention_.emplace(b->first, std::map<std::string, std::size_t>{}).first;
+        for (std::size_t i = 0; i < b->first->kids.size(); ++i) mentioned(*b->first->kids[i], i, it->second);
+      }
+      const auto m = it->second.find(name);
+      if (m != it->second.end() && m->second > b->second) return true;
       if (b->first == functionBody_) break;
     }
     return false;
@@ -1578,6 +1583,7 @@ class Emitter {
   std::vector<Loop> loops_;
   std::vector<std::pair<const Node*, std::size_t>> blocks_;  // the blocks being emitted, and where
   const Node* functionBody_ = nullptr;                         // the body of the function being emitted
+  std::map<const Node*, std::map<std::string, std::size_t>> lastMention_;  // usedAfter's index
 };
 
 }  // namespace
