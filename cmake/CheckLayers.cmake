@@ -17,7 +17,8 @@ set(ASTER_LAYERS
   "contact:core mesh fem"
   "analysis:core expr linalg mesh fem model mechanics contact"
   "post:core mesh fem expr"
-  "lang:core"
+  "comm:core"
+  "lang:core comm"
   "commands:core expr linalg mesh fem model mechanics contact analysis post lang"
 )
 

@@ -5,10 +5,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "comm/translate.hpp"
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "lang/catalogue.hpp"
@@ -42,6 +44,7 @@ const char* kUsage =
     "                    io.popen, the debug library, binary chunks, C modules, files\n"
     "                    written anywhere) and let gmsh run .geo scripts\n"
     "  --doc FILE        write the command reference (Markdown) to FILE and exit\n"
+    "  --to-lua FILE     print the Lua translation of a code_aster command file and exit\n"
     "  --version         print the version and exit\n"
     "  --help            print this help and exit\n"
     "\n"
@@ -101,6 +104,18 @@ int main(int argc, char** argv) {
           return usageError("-u expects N=PATH with a unit number N from 1 to " +
                             std::to_string(std::numeric_limits<int>::max()) + ", got '" + spec + "'");
         session.units[static_cast<int>(unit)] = fs::absolute(spec.substr(eq + 1));
+      } else if (a == "--to-lua") {
+        const std::string file = next("--to-lua");
+        std::ifstream in(file, std::ios::binary);
+        if (!in) return usageError("cannot read " + file);
+        const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        const auto lua = aster::comm::translateCommandFile(text, file);
+        if (!lua.ok) {
+          std::fprintf(stderr, "<F> <COMM> %s\n", lua.error.c_str());
+          return 2;
+        }
+        std::fputs(lua.lua.c_str(), stdout);
+        return 0;
       } else if (a == "--doc") {
         const std::string file = next("--doc");
         std::ofstream out(file, std::ios::binary);

@@ -23,6 +23,7 @@
 
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
+#include "comm/translate.hpp"
 #include "core/suggest.hpp"
 #include "lang/catalogue.hpp"
 #include "lang/operators.hpp"
@@ -1235,17 +1236,29 @@ int Interpreter::runFile(const std::string& path) {
   }
   std::stringstream text;
   text << in.rdbuf();
-  return runString(text.str(), "@" + path);
+  if (!comm::isCommandFile(path)) return runString(text.str(), "@" + path);
+  // A code_aster command file runs as its Lua translation, line for line: messages
+  // quote the command file's own lines.
+  const comm::Translation lua = comm::translateCommandFile(text.str(), path);
+  if (!lua.ok) {
+    Messages::emit(Severity::Fatal, "COMM", lua.error);
+    return finish(2);
+  }
+  return runChunk(lua.lua, "@" + path, text.str());
+}
+
+int Interpreter::runString(const std::string& code, const std::string& chunkName) {
+  return runChunk(code, chunkName, code);
 }
 
 // DEBUT and FIN are optional, as the catalogue of issue 2 wants: a study may
 // end with its last command.
-int Interpreter::runString(const std::string& code, const std::string& chunkName) {
+int Interpreter::runChunk(const std::string& code, const std::string& chunkName, const std::string& shown) {
   lua_State* L = state_->L;
   State& st = *state_;
   auto& lines = st.sources[chunkName];
   lines.clear();  // a chunk run again under the same name is read afresh
-  std::istringstream text(code);
+  std::istringstream text(shown);
   for (std::string line; std::getline(text, line);) lines.push_back(line);
   st.fatals.clear();
   st.fatalCount = 0;

@@ -20,7 +20,8 @@ class Interpreter {
   Interpreter& operator=(const Interpreter&) = delete;
 
   // Exit status as the program returns it: 0 all checks OK, 1 a check NOOK, 2 fatal
-  // error, kInterruptedStatus after Ctrl-C. DEBUT and FIN may be omitted.
+  // error, kInterruptedStatus after Ctrl-C. DEBUT and FIN may be omitted. A code_aster
+  // command file (.comm, .com0-9, .py) runs as its Lua translation (comm/translate.hpp).
   int runFile(const std::string& path);
   // Runs the files in order, each continuing the one before (POURSUITE): FIN
   // ends one file, the first failure ends the run, the checks cover them all.
@@ -31,6 +32,9 @@ class Interpreter {
 
  private:
   int finish(int status);
+  // Runs `code` under `chunkName`; messages quote the lines of `shown` (the command
+  // file a translated chunk comes from).
+  int runChunk(const std::string& code, const std::string& chunkName, const std::string& shown);
   std::unique_ptr<State> state_;
   bool moreFilesFollow_ = false;  // runFiles: the run goes on after this file
   Session& session_;
