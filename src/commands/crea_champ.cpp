@@ -244,8 +244,19 @@ ConceptPtr asse(const Keywords& k, const FieldType& type, const std::string& typ
       if (inSource[n]) nodes.push_back(n);
     const std::size_t snc = src->field.components.size();
     for (std::size_t i = 0; i < names.size(); ++i) {
-      const int sci = componentIndex(src->field, names[i], session.nameOf(*sc));
       checkComponentName(type, resultNames[i]);
+      const auto& have = src->field.components;
+      if (std::find(have.begin(), have.end(), names[i]) == have.end()) {
+        // code_aster's fields carry the components given to them: one the source
+        // lacks brings nothing to the assembly (ssnp150b relies on it).
+        std::string list;
+        for (const auto& c : have) list += (list.empty() ? "" : ", ") + c;
+        Messages::alarm("CREA_CHAMP", occ.path + ": CHAM_GD " + session.nameOf(*sc) + " has no component " +
+                                          names[i] + " (components: " + list + "): nothing is taken from it for " +
+                                          resultNames[i]);
+        continue;
+      }
+      const int sci = componentIndex(src->field, names[i], session.nameOf(*sc));
       auto it = std::find(components.begin(), components.end(), resultNames[i]);
       std::size_t rc = static_cast<std::size_t>(it - components.begin());
       if (it == components.end()) {
