@@ -88,6 +88,27 @@ DIFF = CREA_CHAMP{TYPE_CHAM='NOEU_DEPL_R', OPERATION='ASSE', MAILLAGE=MAIL, ASSE
 
 }  // namespace
 
+TEST(PostCommands, AsseSkipsAComponentTheSourceLacks) {
+  // As code_aster: a component a source field does not carry brings nothing (an
+  // alarm says so); the other terms assemble. LAGS_C = 2 * 1.5 - (nothing) = 3.
+  const auto r = run("asse_missing", R"(
+A = CREA_CHAMP{TYPE_CHAM='NOEU_DEPL_R', OPERATION='AFFE', MAILLAGE=MAIL,
+               AFFE={GROUP_MA='SURFACE', NOM_CMP={'DX', 'DY'}, VALE={1.5, -2.0}}}
+P = CREA_CHAMP{TYPE_CHAM='NOEU_DEPL_R', OPERATION='AFFE', MAILLAGE=MAIL,
+               AFFE={GROUP_MA='SURFACE', NOM_CMP={'LAGS_C'}, VALE={7.0}}}
+D = CREA_CHAMP{TYPE_CHAM='NOEU_DEPL_R', OPERATION='ASSE', MAILLAGE=MAIL, ASSE={
+  {GROUP_MA='SURFACE', CHAM_GD=A, NOM_CMP='DX', NOM_CMP_RESU='LAGS_C', CUMUL='OUI', COEF_R=2.0},
+  {GROUP_MA='SURFACE', CHAM_GD=P, NOM_CMP='DX', NOM_CMP_RESU='LAGS_C', CUMUL='OUI', COEF_R=-1.0}}}
+TEST_RESU{CHAM_NO={CHAM_GD=D, TYPE_TEST='MAX', VALE_CALC=3.0}}
+TEST_RESU{CHAM_NO={CHAM_GD=D, TYPE_TEST='MIN', VALE_CALC=3.0}}
+)");
+  EXPECT_EQ(r.status, 0) << r.err << r.out;
+  EXPECT_EQ(r.ok, 2);
+  EXPECT_NE(r.err.find("ASSE[2]: CHAM_GD P has no component DX (components: LAGS_C): nothing is taken from it for LAGS_C"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(PostCommands, TestResuOnAffeFieldByHand) {
   // DX = 1.5, DY = -2 on the 8 nodes of SURFACE: SOMM_ABS = 8 * 3.5 = 28,
   // SOMM = 8 * (-0.5) = -4, MAX = 1.5, MIN = -2, SOMM of DY = -16.
