@@ -408,14 +408,18 @@ Mesh parseAsterMesh(const std::string& text, const std::string& sourceName, std:
   return AsterParser(text, sourceName, alarms).parse();
 }
 
-Mesh readAsterMesh(const std::string& path, std::vector<std::string>* alarms) {
+std::string meshFileText(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw Error("cannot open the mesh file '" + path + "'");
   std::string text(static_cast<std::size_t>(in.tellg()), '\0');
   in.seekg(0);
   if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
     throw Error("cannot read the mesh file '" + path + "'");
-  return parseAsterMesh(text, path, alarms);
+  return text;
+}
+
+Mesh readAsterMesh(const std::string& path, std::vector<std::string>* alarms) {
+  return parseAsterMesh(meshFileText(path), path, alarms);
 }
 
 namespace {

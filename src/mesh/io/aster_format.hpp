@@ -22,6 +22,9 @@ namespace aster::mesh {
 // What is read but deserves a word to the user ("<file>:<line>: ...") goes
 // to `alarms` when given.
 Mesh readAsterMesh(const std::string& path, std::vector<std::string>* alarms = nullptr);
+// The whole text of a mesh file (ASTER, GMSH's text formats); throws aster::Error
+// naming the file when it cannot be opened or read.
+std::string meshFileText(const std::string& path);
 // Same, from text already in memory; sourceName is used in messages.
 Mesh parseAsterMesh(const std::string& text, const std::string& sourceName,
                     std::vector<std::string>* alarms = nullptr);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "mesh/io/aster_format.hpp"
 #include "mesh/node_ordering.hpp"
 
 namespace aster::mesh {
@@ -290,16 +291,6 @@ class PreGmshReader {
   std::vector<long> nodeNumbers_;
 };
 
-std::string fileText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error("cannot open the mesh file '" + path + "'");
-  std::string text(static_cast<std::size_t>(in.tellg()), '\0');
-  in.seekg(0);
-  if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
-    throw Error("cannot read the mesh file '" + path + "'");
-  return text;
-}
-
 }  // namespace
 
 bool isPreGmshOnlyFile(const std::string& path) {
@@ -315,6 +306,6 @@ Mesh parseGmshAsPreGmsh(const std::string& text, const std::string& sourceName) 
   return PreGmshReader(text, sourceName).read();
 }
 
-Mesh readGmshAsPreGmsh(const std::string& path) { return parseGmshAsPreGmsh(fileText(path), path); }
+Mesh readGmshAsPreGmsh(const std::string& path) { return parseGmshAsPreGmsh(meshFileText(path), path); }
 
 }  // namespace aster::mesh
