@@ -23,6 +23,16 @@ std::vector<std::string> prepareExportRun(const ExportFile& ex, Session& session
       throw Error(at + "gzipped files (flag C) are not supported: gunzip " + e.path.string() +
                   " and list it without C");
     const fs::path path = fs::absolute(ex.resolve(e)).lexically_normal();
+    if (e.result && !session.unsafeLua) {
+      // An .export is untrusted input as a study is: it writes only inside its own folder.
+      std::error_code folderError, fileError;
+      const fs::path folder = fs::weakly_canonical(fs::absolute(ex.source).parent_path(), folderError);
+      const fs::path file = fs::weakly_canonical(path, fileError);
+      const fs::path rel = file.lexically_relative(folder);
+      if (folderError || fileError || rel.empty() || *rel.begin() == "..")
+        throw Error(at + "the result file " + path.string() + " is outside the .export's folder " + folder.string() +
+                    ": an .export writes only inside its own folder (run with --unsafe-lua if you trust it)");
+    }
     if (e.data) {
       std::error_code ec;
       const auto type = fs::status(path, ec).type();
