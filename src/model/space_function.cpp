@@ -31,8 +31,9 @@ SpaceFunction::SpaceFunction(expr::FunctionPtr f, bool currentPosition) : f_(std
     throw Error(std::string("a load function may depend on ") + allowed + " only; its parameter '" + p +
                 "' is none of them");
   }
-  if (dependsOnCurrentPosition() && !dynamic_cast<const expr::Expression*>(f_.get()) &&
-      !dynamic_cast<const expr::Tabulated*>(f_.get()))
+  expression_ = dynamic_cast<const expr::Expression*>(f_.get());
+  tabulated_ = dynamic_cast<const expr::Tabulated*>(f_.get());
+  if (dependsOnCurrentPosition() && !expression_ && !tabulated_)
     throw Error("a function of XF, YF or ZF must be a FORMULE or a DEFI_FONCTION (its derivatives are needed)");
 }
 
@@ -42,7 +43,7 @@ double SpaceFunction::atCurrentPosition(double x, double y, double t, double xf,
   if (!dependsOnCurrentPosition()) return checked(x, y, 0.0, t);
   const double all[kSlots] = {x, y, 0.0, t, xf, yf, 0.0};
   double value;
-  if (const auto* e = dynamic_cast<const expr::Expression*>(f_.get())) {
+  if (const auto* e = expression_) {
     using D = expr::Dual1<2>;
     D args[kSlots];
     for (int i = 0; i < count_; ++i)
@@ -54,7 +55,7 @@ double SpaceFunction::atCurrentPosition(double x, double y, double t, double xf,
     gradient[0] = v.d[0];
     gradient[1] = v.d[1];
   } else {  // a DEFI_FONCTION of one current coordinate
-    const auto& tab = static_cast<const expr::Tabulated&>(*f_);
+    const auto& tab = *tabulated_;
     const double at = all[slot_[0]];
     value = tab.valueAt(at);
     if (slot_[0] == 4 || slot_[0] == 5) gradient[slot_[0] - 4] = tab.slopeAt(at);
@@ -69,7 +70,7 @@ double SpaceFunction::checked(double x, double y, double z, double t) const {
   const double all[kSlots] = {x, y, z, t, 0.0, 0.0, 0.0};
   double args[kSlots];
   for (int i = 0; i < count_; ++i) args[i] = all[slot_[i]];
-  if (const auto* e = dynamic_cast<const expr::Expression*>(f_.get())) return e->evaluateChecked(args);
+  if (expression_) return expression_->evaluateChecked(args);
   const double v = f_->evaluate(args);
   if (!std::isfinite(v)) throw Error("the function returns " + format::shortest(v));
   return v;

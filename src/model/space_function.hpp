@@ -10,6 +10,11 @@
 
 #include "expr/function.hpp"
 
+namespace aster::expr {
+class Expression;
+class Tabulated;
+}  // namespace aster::expr
+
 namespace aster::model {
 
 class SpaceFunction {
@@ -42,6 +47,9 @@ class SpaceFunction {
  private:
   double constant_ = 0.0;
   expr::FunctionPtr f_;
+  // f_ as what it is, found once: the checked and differentiated evaluations need it.
+  const expr::Expression* expression_ = nullptr;
+  const expr::Tabulated* tabulated_ = nullptr;
   static constexpr int kSlots = 7;  // X, Y, Z, INST, XF, YF, ZF
   std::array<int, kSlots> slot_{};  // parameter i of f_ is slot_[i] (0 X, 1 Y, 2 Z, 3 INST, 4 XF, 5 YF, 6 ZF)
   int count_ = 0;
