@@ -27,6 +27,9 @@
 // C_PLAN (element_kernel.cpp picks it, plane_element.cpp instantiates it); AXIS
 // elements call the law's 4-component integrate().
 #pragma once
+#include <string>
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "mechanics/modelling.hpp"
@@ -71,6 +74,8 @@ class BehaviourLaw {
   virtual PlaneHypothesis hypothesis() const = 0;
   // Internal variables per Gauss point (VARI_ELGA's V1, V2, ...).
   virtual int internalVariableCount() const = 0;
+  // Their names (code_aster's NOM_VARI: EPSPEQ, INDIPLAS, ...), internalVariableCount() of them.
+  virtual std::vector<std::string> internalVariableNames() const { return {}; }
   // Throws aster::Error for a state the law cannot integrate (the step is then cut).
   virtual void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const = 0;
 };
