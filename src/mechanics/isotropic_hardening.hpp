@@ -43,12 +43,14 @@ class IsotropicHardening {
   double returnIncrement(double q, double h, double p) const;
 
  private:
-  // Segment k runs from points_[k] to points_[k + 1]; the last point's slope is beyondSlope_.
+  // Segment k runs from (p_[k], R_[k]) to (p_[k + 1], R_[k + 1]); past the last
+  // point the slope is beyondSlope_.
   std::vector<double> p_, R_;
   double shift_ = 0;  // the C of lessKinematic: R(p) - 1.5 shift_ p
   Beyond beyond_ = Beyond::Linear;
   double beyondSlope_ = 0;
-  int segmentOf(double p) const;  // -1 past the last point
+  // The segment holding p (a corner: the one on its right), -1 past the last point.
+  int segmentOf(double p) const;
   double slopeOfSegment(int k) const;
 };
 

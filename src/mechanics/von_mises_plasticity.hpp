@@ -70,10 +70,12 @@ class VonMisesPlasticity final : public BehaviourLaw {
   const VonMisesParameters& parameters() const { return parameters_; }
 
  private:
-  // The 3D return from the previous state with the strain increment de (all four
-  // components given); writes stress, variables and the full 4x4 tangent.
-  void returnMap(const LawInput& in, const double de[4], double stress[4], double* variables, VoigtTangent* tangent,
-                 bool& plastic) const;
+  // The 3D return from the previous state with the strain increment de (tensor
+  // components xx, yy, zz, xy); writes stress, variables and the full 4x4 tangent.
+  // atRest: no increment (a step's prediction), where the tangent after a plastic
+  // step is the continuum elastic-plastic one, as code_aster's.
+  void returnMap(const LawInput& in, const double de[4], bool atRest, double stress[4], double* variables,
+                 VoigtTangent* tangent, bool& plastic) const;
 
   VonMisesParameters parameters_;
   PlaneHypothesis hypothesis_;
