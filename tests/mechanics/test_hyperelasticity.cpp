@@ -11,7 +11,11 @@
 #include <limits>
 #include <random>
 
+#include "../support/square_mesh.hpp"
+#include "analysis/mechanical_system.hpp"
+#include "analysis/static_nonlinear.hpp"
 #include "core/error.hpp"
+#include "expr/expression.hpp"
 #include "mechanics/hyperelasticity.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
 #include "patch_support.hpp"
@@ -51,6 +55,11 @@ Result run(const Hyperelasticity& law, const Eigen::Matrix2d& E, bool withTangen
   return r;
 }
 
+// The lateral stretch t of a uniaxial stretch l along x making sigma_22 = 0 of
+// the hand formula: F = diag(l, t, t) in C_PLAN (sigma_33 = 0 too), F = diag(l, t, 1)
+// in D_PLAN. Bisection.
+double lateralStretch(double l, PlaneHypothesis h, double c10, double c01, double c20, double bulk);
+
 // The Cauchy stress of the deformation gradient F (3x3) by the formula in the header.
 Eigen::Matrix3d handCauchy(const Eigen::Matrix3d& F, double c10, double c01, double c20, double bulk) {
   const double J = F.determinant();
@@ -60,6 +69,21 @@ Eigen::Matrix3d handCauchy(const Eigen::Matrix3d& F, double c10, double c01, dou
   Eigen::Matrix3d T = (W1 + I1 * W2) * Bbar - W2 * Bbar * Bbar;
   T -= T.trace() / 3 * Eigen::Matrix3d::Identity();
   return 2 / J * T + bulk * (J - 1) * Eigen::Matrix3d::Identity();
+}
+
+double lateralStretch(double l, PlaneHypothesis h, double c10, double c01, double c20, double bulk) {
+  auto sigma22 = [&](double t) {
+    Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+    F(0, 0) = l;
+    F(1, 1) = t;
+    if (h == PlaneHypothesis::PlaneStress) F(2, 2) = t;
+    return handCauchy(F, c10, c01, c20, bulk)(1, 1);
+  };
+  double lo = 0.2, hi = 1.5;  // sigma_22 < 0 at lo, > 0 at hi
+  EXPECT_LT(sigma22(lo), 0);
+  EXPECT_GT(sigma22(hi), 0);
+  for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) (sigma22(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
+  return 0.5 * (lo + hi);
 }
 
 // sigma = F S F^T / J of the law's PK2, F = [[F2, 0], [0, lambda3]].
@@ -192,24 +216,17 @@ TEST(Hyperelasticity, PlaneStressUniaxialTensionByHand) {
     const Hyperelasticity law(kC10, kC01, kC20, bulk, PlaneHypothesis::PlaneStress);
     for (double l : {1.05, 1.5, 2.5, 0.8}) {
       SCOPED_TRACE("K " + std::to_string(bulk) + " stretch " + std::to_string(l));
-      auto lateral = [&](double t) {
-        Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
-        F(0, 0) = l;
-        F(1, 1) = F(2, 2) = t;
-        return handCauchy(F, kC10, kC01, kC20, bulk);
-      };
-      double lo = 0.2, hi = 1.5;  // sigma_22 < 0 at lo, > 0 at hi
-      ASSERT_LT(lateral(lo)(1, 1), 0);
-      ASSERT_GT(lateral(hi)(1, 1), 0);
-      for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) (lateral(0.5 * (lo + hi))(1, 1) < 0 ? lo : hi) = 0.5 * (lo + hi);
-      const double t = 0.5 * (lo + hi);
+      const double t = lateralStretch(l, PlaneHypothesis::PlaneStress, kC10, kC01, kC20, bulk);
+      Eigen::Matrix3d F3 = Eigen::Matrix3d::Identity();
+      F3(0, 0) = l;
+      F3(1, 1) = F3(2, 2) = t;
       Eigen::Matrix2d F = Eigen::Matrix2d::Zero();
       F(0, 0) = l;
       F(1, 1) = t;
       const Result r = run(law, greenLagrange(F), false);
       EXPECT_NEAR(r.strainZZ, 0.5 * (t * t - 1), 1e-12);
       const Eigen::Matrix3d sigma = lawCauchy(F, std::sqrt(1 + 2 * r.strainZZ), r.stress);
-      const double s11 = lateral(t)(0, 0);
+      const double s11 = handCauchy(F3, kC10, kC01, kC20, bulk)(0, 0);
       EXPECT_NEAR(sigma(0, 0), s11, 1e-10 * std::fabs(s11));
       EXPECT_NEAR(sigma(1, 1), 0.0, 1e-10 * std::fabs(s11));
       EXPECT_EQ(r.stress(kZZ), 0.0);
@@ -321,5 +338,75 @@ TEST(Hyperelasticity, ElementTangentMatchesDifferences) {
     const Element element(Hyperelasticity(kC10, kC01, kC20, kBulk, h), Kinematics::GreenLagrange);
     element.internalForce(X, u, &f, nullptr);
     EXPECT_LT(f.norm(), 1e-12);
+  }
+}
+
+// Unit square of QUAD4, GROT_GDEP, through MechanicalSystem and the Newton driver:
+// DX = 0 on GAUCHE, DY = 0 on BAS, DX = d INST on DROITE, HAUT free. The state is
+// homogeneous, F = diag(l, t, t3) with l = 1 + d INST, t from sigma_22 = 0 by hand
+// (lateralStretch), t3 = t in C_PLAN, 1 in D_PLAN: uy = (t - 1) y, the Cauchy
+// stresses of the hand formula (SIEF_ELGA), the reaction on DROITE the first
+// Piola-Kirchhoff P11 = J sigma_11 / l on the unit reference side, VIDE = 0.
+TEST(Hyperelasticity, UniaxialStretchThroughTheNewtonDriver) {
+  for (auto h : {PlaneHypothesis::PlaneStrain, PlaneHypothesis::PlaneStress}) {
+    SCOPED_TRACE(planeHypothesisName(h));
+    auto mesh = std::make_shared<mesh::Mesh>(test_support::squareMesh(2, mesh::CellType::QUAD4));
+    auto model = std::make_shared<model::Model>(mesh);
+    std::vector<int> all(mesh->cellCount());
+    for (int c = 0; c < mesh->cellCount(); ++c) all[c] = c;
+    model->assign(all, h);
+    const double d = 0.8;
+    model::MechanicalLoad load;
+    load.imposed.push_back({mesh->nodesOfCells(mesh->cellGroup("GAUCHE")), 0, model::SpaceFunction(0.0)});
+    load.imposed.push_back({mesh->nodesOfCells(mesh->cellGroup("BAS")), 1, model::SpaceFunction(0.0)});
+    load.imposed.push_back({mesh->nodesOfCells(mesh->cellGroup("DROITE")), 0, model::SpaceFunction(d)});
+    auto multiplier = expr::Expression::compile("INST", {"INST"});
+
+    analysis::MechanicalProblem problem;
+    problem.model = model;
+    problem.loads.push_back({&load, multiplier});
+    problem.kinematics.assign(model->cells().size(), Kinematics::GreenLagrange);
+    problem.relations.assign(model->cells().size(), std::make_shared<Hyperelasticity>(kC10, kC01, kC20, kBulk, h));
+    analysis::MechanicalSystem system(problem);
+    EXPECT_EQ(system.internalVariableCount(), 1);
+
+    analysis::NewtonSettings settings;
+    settings.resiGlobRela = 1e-12;
+    settings.iterGlobMaxi = 20;
+    analysis::StaticNonlinear newton(system, nullptr, settings);
+    Eigen::VectorXd U = Eigen::VectorXd::Zero(newton.unknownCount());
+    int instants = 0;
+    newton.run(U, {0.0, 0.25, 0.5, 0.75, 1.0}, [&](const analysis::ConvergedInstant& c) {
+      SCOPED_TRACE("INST " + std::to_string(c.time));
+      const double l = 1 + d * c.time, t = lateralStretch(l, h, kC10, kC01, kC20, kBulk);
+      const double t3 = h == PlaneHypothesis::PlaneStress ? t : 1.0;
+      Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+      F(0, 0) = l;
+      F(1, 1) = t;
+      F(2, 2) = t3;
+      const Eigen::Matrix3d sigma = handCauchy(F, kC10, kC01, kC20, kBulk);
+      const double scale = std::fabs(sigma(0, 0));
+      for (int n = 0; n < mesh->nodeCount(); ++n) {
+        const Eigen::Vector3d x = mesh->node(n);
+        EXPECT_NEAR((*c.U)(system.dof(n, 0)), (l - 1) * x(0), 1e-11);
+        EXPECT_NEAR((*c.U)(system.dof(n, 1)), (t - 1) * x(1), 1e-11);
+      }
+      std::vector<int> offsets;
+      std::vector<double> s;
+      system.gaussStresses(*c.U, offsets, s);
+      for (std::size_t q = 0; q < s.size() / 4; ++q) {
+        EXPECT_NEAR(s[4 * q + 0], sigma(0, 0), 1e-10 * scale);
+        EXPECT_NEAR(s[4 * q + 1], 0.0, 1e-10 * scale);
+        EXPECT_NEAR(s[4 * q + 2], h == PlaneHypothesis::PlaneStress ? 0.0 : sigma(2, 2), 1e-10 * scale);
+        EXPECT_NEAR(s[4 * q + 3], 0.0, 1e-10 * scale);
+      }
+      double reaction = 0;
+      for (int n : mesh->nodesOfCells(mesh->cellGroup("DROITE"))) reaction += (*c.internalForces)(system.dof(n, 0));
+      EXPECT_NEAR(reaction, F.determinant() * sigma(0, 0) / l, 1e-10 * scale);
+      system.gaussVariables(offsets, s);
+      for (double v : s) EXPECT_EQ(v, 0.0);
+      ++instants;
+    });
+    EXPECT_EQ(instants, 4);
   }
 }
