@@ -42,7 +42,8 @@ class Hyperelasticity final : public BehaviourLaw {
   int internalVariableCount() const override { return 1; }
   std::vector<std::string> internalVariableNames() const override { return {"VIDE"}; }
 
-  // S and dS/dE from E (in.strain, in-plane) and, in D_PLAN, E33 = 0. Throws
+  // S and dS/dE from E (in.strain, in-plane) and, in D_PLAN, in.strainZZ (the
+  // element gives 0; the law takes any E33, as ELAS does). Throws
   // aster::Error when det C <= 0 or the plane stress Newton does not converge.
   void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const override;
 
