@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "commands/contact_concept.hpp"
+#include "commands/elga_field.hpp"
 #include "core/number_format.hpp"
 #include "commands/field_concepts.hpp"
 #include "commands/function_concepts.hpp"
@@ -20,6 +21,8 @@
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "lang/operators.hpp"
+#include "mechanics/von_mises_plasticity.hpp"
+#include "model/behaviour.hpp"
 #include "analysis/convergence_table.hpp"
 #include "analysis/static_nonlinear.hpp"
 
@@ -80,14 +83,48 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
     throw Error("CHAM_MATER was built on another mesh than MODELE's");
   problem.materials = matField->field;
 
-  // Behaviour: PETIT everywhere unless COMPORTEMENT says otherwise.
-  std::vector<mechanics::Kinematics> byCell(mesh.cellCount(), mechanics::Kinematics::SmallStrain);
+  // Behaviour: ELAS in PETIT everywhere unless COMPORTEMENT says otherwise (the last occurrence wins).
+  struct CellBehaviour {
+    const Keywords* occurrence = nullptr;  // COMPORTEMENT's, null: ELAS, PETIT
+    mechanics::Kinematics kinematics = mechanics::Kinematics::SmallStrain;
+  };
+  std::vector<CellBehaviour> byCell(mesh.cellCount());
+  bool onlyElastic = true;
   for (const auto& occ : k.factor("COMPORTEMENT")) {
     const auto kin = mechanics::kinematicsFromName(occ.text("DEFORMATION"));
+    if (occ.integer("ITER_INTE_PAS") != 0)
+      throw Error("COMPORTEMENT: ITER_INTE_PAS=" + std::to_string(occ.integer("ITER_INTE_PAS")) +
+                  ": the local subdivision of the step is not available (only ITER_INTE_PAS=0); "
+                  "DEFI_LIST_INST's ECHEC cuts the global step instead");
+    onlyElastic &= occ.text("RELATION") == "ELAS";
     std::vector<int> cells = occ.has("GROUP_MA") || occ.has("MAILLE") ? selectCells(mesh, occ) : model->cells();
-    for (int c : cells) byCell[c] = kin;
+    for (int c : cells) byCell[c] = {&occ, kin};
   }
-  for (int c : model->cells()) problem.kinematics.push_back(byCell[c]);
+  const auto& cells = model->cells();
+  for (int c : cells) problem.kinematics.push_back(byCell[c].kinematics);
+  // A problem of ELAS alone keeps MechanicalSystem's own elastic laws (problem.relations empty).
+  if (!onlyElastic) {
+    model::BehaviourFactory factory;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const int c = cells[i];
+      const Keywords* occ = byCell[c].occurrence;
+      model::BehaviourSite site;
+      site.material = problem.materials->at(c);
+      site.cellName = mesh.cellName(c);
+      if (!site.material)
+        throw Error("cell " + site.cellName + " of the model has no material (AFFE_MATERIAU covers it?)");
+      site.materialName = problem.materials->materialName(c);
+      site.modelisation = model->modelisation(static_cast<int>(i));
+      site.deformation = occ ? occ->text("DEFORMATION") : "PETIT";
+      site.kinematics = byCell[c].kinematics;
+      model::IntegrationSettings integration;
+      if (occ) {
+        integration.maxIterations = static_cast<int>(occ->integer("ITER_INTE_MAXI"));
+        integration.tolerance = occ->real("RESI_INTE_RELA");
+      }
+      problem.relations.push_back(factory.law(occ ? occ->text("RELATION") : "ELAS", site, integration));
+    }
+  }
 
   readExcit(k, session, model, problem, keep);
   return problem;
@@ -121,10 +158,16 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   return settings;
 }
 
-// ETAT_INIT: the state to start from, an instant of an EVOL_NOLI or a DEPL field (or neither).
+// ETAT_INIT: the state to start from, an instant of an EVOL_NOLI or fields (DEPL,
+// SIGM, VARI), or nothing.
 struct InitialState {
   const ResultInstant* instant = nullptr;  // EVOL_NOLI's (it gives the initial instant too)
   const NodalFieldConcept* field = nullptr;  // DEPL's
+  const CellField* stresses = nullptr;       // SIGM's or the instant's SIEF_ELGA
+  const CellField* variables = nullptr;      // VARI's or the instant's VARI_ELGA
+  const CellFieldConcept* stressConcept = nullptr;    // SIGM's (its components may be absent on some cells)
+  const CellFieldConcept* variableConcept = nullptr;  // VARI's
+  bool given() const { return instant || field || stresses || variables; }
 };
 
 InitialState readInitialState(const Keywords& k, Session& session, const model::Model& model, const ConceptPtr& reuse) {
@@ -140,12 +183,26 @@ InitialState readInitialState(const Keywords& k, Session& session, const model::
       } catch (const Error& e) {
         throw Error("ETAT_INIT: " + std::string(e.what()));
       }
-    } else {
+      state.stresses = ResultConcept::cellField(*state.instant, "SIEF_ELGA");
+      state.variables = ResultConcept::cellField(*state.instant, "VARI_ELGA");
+    }
+    if (init.has("DEPL")) {
       state.field = dynamic_cast<const NodalFieldConcept*>(init.conceptPtr("DEPL").get());
       if (!state.field || isFunctionField(*state.field))
         throw Error("ETAT_INIT/DEPL: " + session.nameOf(*init.conceptPtr("DEPL")) + " is not a field of real nodal values");
       if (state.field->mesh != model.meshPtr())
         throw Error("ETAT_INIT/DEPL: the field is defined on another mesh than MODELE's");
+    }
+    for (const char* key : {"SIGM", "VARI"}) {
+      if (!init.has(key)) continue;
+      const auto* f = dynamic_cast<const CellFieldConcept*>(init.conceptPtr(key).get());
+      const std::string name = session.nameOf(*init.conceptPtr(key));
+      if (!f || f->field.location != CellLocation::GaussPoints)
+        throw Error(std::string("ETAT_INIT/") + key + ": " + name + " is not a field at Gauss points (ELGA)");
+      if (f->mesh != model.meshPtr())
+        throw Error(std::string("ETAT_INIT/") + key + ": " + name + " is defined on another mesh than MODELE's");
+      (std::string(key) == "SIGM" ? state.stressConcept : state.variableConcept) = f;
+      (std::string(key) == "SIGM" ? state.stresses : state.variables) = &f->field;
     }
   } else if (reuse) {
     throw Error("reuse=: STAT_NON_LINE continues a result from a state; give ETAT_INIT = {EVOL_NOLI = " +
@@ -163,6 +220,67 @@ void setInitialUnknowns(const InitialState& state, const analysis::MechanicalSys
   for (int n = 0; n < system.model().mesh().nodeCount(); ++n)
     for (int c = 0; c < 2; ++c)
       if (system.dof(n, c) >= 0) U(system.dof(n, c)) = depl.values[n * nc + (c == 0 ? cx : cy)];
+}
+
+// A field at Gauss points laid out as MechanicalSystem keeps its state: `names` per
+// Gauss point of each cell of the model, zero where the field lacks the cell or the component.
+std::vector<double> modelLayout(const CellField& f, const CellFieldConcept* concept,
+                                const analysis::MechanicalSystem& system, const std::vector<std::string>& names,
+                                const std::string& what) {
+  const auto& mesh = system.model().mesh();
+  const auto& cells = system.model().cells();
+  std::vector<int> indexOf(mesh.cellCount(), -1);
+  for (std::size_t i = 0; i < f.cells.size(); ++i) indexOf[f.cells[i]] = static_cast<int>(i);
+  std::vector<int> column(names.size(), -1);
+  for (std::size_t j = 0; j < names.size(); ++j)
+    for (std::size_t c = 0; c < f.components.size(); ++c)
+      if (f.components[c] == names[j]) column[j] = static_cast<int>(c);
+  std::vector<double> out;
+  const std::size_t nc = f.components.size();
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const int points = system.gaussPoints(static_cast<int>(k));
+    const int i = indexOf[cells[k]];
+    if (i >= 0 && pointsOf(f, i) != points)
+      throw Error(what + ": the field has " + std::to_string(pointsOf(f, i)) + " points on cell " +
+                  mesh.cellName(cells[k]) + ", whose element has " + std::to_string(points) + " Gauss points");
+    for (int q = 0; q < points; ++q)
+      for (std::size_t j = 0; j < names.size(); ++j) {
+        const bool present = i >= 0 && column[j] >= 0 && (!concept || componentPresent(*concept, i, column[j]));
+        out.push_back(present ? f.values[f.offsets[i] + q * nc + column[j]] : 0.0);
+      }
+  }
+  return out;
+}
+
+// The laws' state of ETAT_INIT: U and, for the laws with history, the stresses and
+// internal variables of SIGM / VARI or of EVOL_NOLI's instant.
+void setInitialLawState(const InitialState& state, analysis::MechanicalSystem& system, const Eigen::VectorXd& U) {
+  if (!state.given()) return;
+  const auto& problem = system.problem();
+  const auto& cells = system.model().cells();
+  std::vector<double> stresses, variables;
+  if (state.stresses || state.variables)
+    for (std::size_t k = 0; k < problem.relations.size(); ++k)
+      if (system.hasHistory(static_cast<int>(k)) && problem.kinematics[k] == mechanics::Kinematics::GreenLagrange &&
+          dynamic_cast<const mechanics::VonMisesPlasticity*>(problem.relations[k].get()))
+        throw Error(std::string("ETAT_INIT: ") + (state.instant ? "EVOL_NOLI's SIEF_ELGA" : "SIGM") +
+                    " holds Cauchy stresses, and a von Mises law in DEFORMATION='GROT_GDEP' (cell " +
+                    system.model().mesh().cellName(cells[k]) + ") integrates from the second Piola-Kirchhoff "
+                    "stress: restarting it from stresses and internal variables is not available");
+  if (state.stresses)
+    stresses = modelLayout(*state.stresses, state.stressConcept, system, {"SIXX", "SIYY", "SIZZ", "SIXY"},
+                           "ETAT_INIT/SIGM");
+  if (state.variables) {
+    std::vector<std::string> names;
+    for (int v = 1; v <= system.internalVariableCount(); ++v) names.push_back("V" + std::to_string(v));
+    for (const auto& c : state.variables->components)
+      if (std::find(names.begin(), names.end(), c) == names.end())
+        throw Error("ETAT_INIT/VARI: the field has the component " + c + ", and the laws of the model have " +
+                    std::to_string(system.internalVariableCount()) + " internal variables (V1 ... V" +
+                    std::to_string(system.internalVariableCount()) + ")");
+    variables = modelLayout(*state.variables, state.variableConcept, system, names, "ETAT_INIT/VARI");
+  }
+  system.setAcceptedState(U, state.stresses ? &stresses : nullptr, state.variables ? &variables : nullptr);
 }
 
 // The run's figures; INFO >= 2 adds the linear solver's.
@@ -220,6 +338,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   result->materials = problem.materials;
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newtonSolver.unknownCount());
   setInitialUnknowns(initial, system, U);
+  setInitialLawState(initial, system, U);
   if (reuse) {
     // A restart from an earlier instant replaces what the result held after it.
     const double eps = 1e-6 * std::max(1.0, std::fabs(times.front()));
