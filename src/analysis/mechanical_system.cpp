@@ -503,6 +503,17 @@ void MechanicalSystem::gaussStresses(const Eigen::VectorXd& U, std::vector<int>&
   }
 }
 
+std::vector<std::string> MechanicalSystem::internalVariableNames() const {
+  std::vector<std::string> names;
+  for (const auto& law : problem_.relations) {
+    if (!law || law->internalVariableCount() == 0) continue;
+    const std::vector<std::string> own = law->internalVariableNames();
+    if (names.empty()) names = own;
+    else if (own != names) return {};
+  }
+  return names;
+}
+
 void MechanicalSystem::gaussVariables(std::vector<int>& offsets, std::vector<double>& values) const {
   offsets.assign(1, 0);
   values.clear();

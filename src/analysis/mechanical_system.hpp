@@ -121,6 +121,9 @@ class MechanicalSystem {
   // VARI_ELGA of the accepted state: internalVariableCount() values (V1, V2, ...) per
   // Gauss point of every cell of the model, zero past a cell's own law's count.
   int internalVariableCount() const { return maxVariables_; }
+  // The laws' names of V1, V2, ... (code_aster's NOM_VARI) when every law with internal
+  // variables names them alike, else empty.
+  std::vector<std::string> internalVariableNames() const;
   void gaussVariables(std::vector<int>& offsets, std::vector<double>& values) const;
   // Gauss point positions and weights*detJ in the reference configuration (times r
   // in AXIS: per radian).

@@ -440,6 +440,7 @@ ConceptPtr calcChamp(const Keywords& k, Session& session, ConceptPtr reuse) {
   if (!reuse) {
     result = std::make_shared<ResultConcept>(source->model, source->typeName());
     result->materials = source->materials;
+    result->variableNames = source->variableNames;
   }
   std::vector<ResultInstant*> instants = selectInstants(*source, k);
   if (!reuse) {

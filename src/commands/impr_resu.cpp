@@ -103,7 +103,19 @@ mesh::CellValues cellComponents(const mesh::Mesh& mesh, const CellField& f, cons
   return v;
 }
 
-Item resolve(const Keywords& occ, bool textFormat) {
+// VTK names the components of an array: the internal variables V1, V2, ... of VARI_*
+// fields there take the laws' names (EPSPEQ, INDIPLAS, ...) when the result knows them.
+void nameVariables(const std::string& field, std::vector<std::string>& components,
+                   const std::vector<std::string>& names) {
+  if (names.empty() || field.rfind("VARI_", 0) != 0) return;
+  for (auto& c : components) {
+    if (c.size() < 2 || c[0] != 'V' || c.find_first_not_of("0123456789", 1) != std::string::npos) continue;
+    const std::size_t k = std::stoul(c.substr(1));
+    if (k >= 1 && k <= names.size()) c = names[k - 1];
+  }
+}
+
+Item resolve(const Keywords& occ, bool textFormat, bool vtk) {
   Item item;
   const std::vector<std::string> cmps = occ.texts("NOM_CMP");
   std::shared_ptr<mesh::Mesh> given;
@@ -159,6 +171,10 @@ Item resolve(const Keywords& occ, bool textFormat) {
       }
       if (!textFormat)
         for (const CellField* g : gauss) fi.cellFields.push_back(cellComponents(*item.mesh, *g, cmps));
+      if (vtk) {
+        for (auto& f : fi.fields) nameVariables(f.name, f.components, r->variableNames);
+        for (auto& f : fi.cellFields) nameVariables(f.name, f.components, r->variableNames);
+      }
       item.instants.push_back(std::move(fi));
       item.cellFields.push_back(std::move(gauss));
       item.resultInstants.push_back(ri);
@@ -403,7 +419,7 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
   std::vector<Item> items;
   for (std::size_t i = 0; i < occs.size(); ++i) {
     try {
-      items.push_back(resolve(occs[i], text));
+      items.push_back(resolve(occs[i], text, format == "VTK"));
     } catch (const Error& e) {
       const std::string what = e.what();
       if (what.rfind(occs[i].path + "/", 0) == 0) throw;  // already names the occurrence

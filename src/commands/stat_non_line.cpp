@@ -336,6 +336,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   std::shared_ptr<ResultConcept> result =
       reuse ? std::static_pointer_cast<ResultConcept>(reuse) : std::make_shared<ResultConcept>(model);
   result->materials = problem.materials;
+  result->variableNames = system.internalVariableNames();
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newtonSolver.unknownCount());
   setInitialUnknowns(initial, system, U);
   setInitialLawState(initial, system, U);
