@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <Eigen/LU>
+
 #include "commands/contact_concept.hpp"
 #include "commands/elga_field.hpp"
 #include "core/number_format.hpp"
@@ -23,6 +25,8 @@
 #include "lang/operators.hpp"
 #include "mechanics/von_mises_plasticity.hpp"
 #include "model/behaviour.hpp"
+#include "post/strain_fields.hpp"
+#include "fem/mesh_cell_type.hpp"
 #include "analysis/convergence_table.hpp"
 #include "analysis/static_nonlinear.hpp"
 
@@ -252,24 +256,79 @@ std::vector<double> modelLayout(const CellField& f, const CellFieldConcept* conc
   return out;
 }
 
+// The cells (indices in the model) whose law integrates from the second Piola-Kirchhoff
+// stress S while SIEF_ELGA holds Cauchy's: a von Mises law in GROT_GDEP.
+bool keepsPiolaKirchhoff(const analysis::MechanicalSystem& system, std::size_t k) {
+  const auto& problem = system.problem();
+  return k < problem.relations.size() && system.hasHistory(static_cast<int>(k)) &&
+         problem.kinematics[k] == mechanics::Kinematics::GreenLagrange &&
+         dynamic_cast<const mechanics::VonMisesPlasticity*>(problem.relations[k].get());
+}
+
+// The Cauchy stresses of ETAT_INIT made the laws' measure where a law keeps S:
+// S = J F^-1 sigma F^-T, F = I + grad u of the initial DEPL at each Gauss point (F33 =
+// 1 in D_PLAN, 1 + u_r / r in AXIS). In C_PLAN F33 comes from the law's own
+// plane stress condition and is not known from the displacements: refused there.
+void cauchyToPiolaKirchhoff(const analysis::MechanicalSystem& system, const Eigen::VectorXd& U,
+                            std::vector<double>& stresses) {
+  const auto& model = system.model();
+  const auto& mesh = model.mesh();
+  std::size_t at = 0;
+  std::vector<double> X, u, F;
+  for (std::size_t k = 0; k < model.cells().size(); ++k) {
+    const int c = model.cells()[k], points = system.gaussPoints(static_cast<int>(k));
+    if (keepsPiolaKirchhoff(system, k)) {
+      if (model.modelisation(static_cast<int>(k)) == mechanics::PlaneHypothesis::PlaneStress)
+        throw Error("ETAT_INIT: the stresses (SIEF_ELGA, Cauchy's) of cell " + mesh.cellName(c) +
+                    " would be converted to the second Piola-Kirchhoff stress its von Mises law in "
+                    "DEFORMATION='GROT_GDEP' integrates from, and in C_PLAN the out-of-plane stretch this "
+                    "needs is not known from the displacements: restarting such a law in C_PLAN from "
+                    "stresses is not available (D_PLAN and AXIS are)");
+      X.clear();
+      u.clear();
+      for (int n : mesh.cellNodes(c)) {
+        const auto p = mesh.node(n);
+        X.push_back(p(0));
+        X.push_back(p(1));
+        for (int d = 0; d < 2; ++d) u.push_back(system.dof(n, d) >= 0 ? U(system.dof(n, d)) : 0.0);
+      }
+      F.resize(static_cast<std::size_t>(points) * post::kGradientComponents);
+      post::gaussDeformationGradients(fem::referenceCell(mesh.cellType(c), "ETAT_INIT"), X.data(), u.data(),
+                                      model.axisymmetric(), F.data());
+      for (int q = 0; q < points; ++q) {
+        const double* f = F.data() + q * post::kGradientComponents;
+        double* s = stresses.data() + at + 4 * q;
+        Eigen::Matrix2d F2;
+        F2 << f[0], f[1], f[2], f[3];
+        const double J = F2.determinant() * f[4];
+        if (!(J > 0))
+          throw Error("ETAT_INIT: the initial displacement inverts cell " + mesh.cellName(c) + " (det F = " +
+                      format::shortest(J) + " at its Gauss point " + std::to_string(q + 1) + ")");
+        Eigen::Matrix2d sigma;
+        sigma << s[0], s[3], s[3], s[1];
+        const Eigen::Matrix2d Finv = F2.inverse();
+        const Eigen::Matrix2d S = J * Finv * sigma * Finv.transpose();
+        s[0] = S(0, 0);
+        s[1] = S(1, 1);
+        s[2] = J * s[2] / (f[4] * f[4]);
+        s[3] = S(0, 1);
+      }
+    }
+    at += 4 * static_cast<std::size_t>(points);
+  }
+}
+
 // The laws' state of ETAT_INIT: U and, for the laws with history, the stresses and
-// internal variables of SIGM / VARI or of EVOL_NOLI's instant.
+// internal variables of SIGM / VARI or of EVOL_NOLI's instant (Cauchy stresses made
+// second Piola-Kirchhoff ones where a law keeps those).
 void setInitialLawState(const InitialState& state, analysis::MechanicalSystem& system, const Eigen::VectorXd& U) {
   if (!state.given()) return;
-  const auto& problem = system.problem();
-  const auto& cells = system.model().cells();
   std::vector<double> stresses, variables;
-  if (state.stresses || state.variables)
-    for (std::size_t k = 0; k < problem.relations.size(); ++k)
-      if (system.hasHistory(static_cast<int>(k)) && problem.kinematics[k] == mechanics::Kinematics::GreenLagrange &&
-          dynamic_cast<const mechanics::VonMisesPlasticity*>(problem.relations[k].get()))
-        throw Error(std::string("ETAT_INIT: ") + (state.instant ? "EVOL_NOLI's SIEF_ELGA" : "SIGM") +
-                    " holds Cauchy stresses, and a von Mises law in DEFORMATION='GROT_GDEP' (cell " +
-                    system.model().mesh().cellName(cells[k]) + ") integrates from the second Piola-Kirchhoff "
-                    "stress: restarting it from stresses and internal variables is not available");
-  if (state.stresses)
+  if (state.stresses) {
     stresses = modelLayout(*state.stresses, state.stressConcept, system, {"SIXX", "SIYY", "SIZZ", "SIXY"},
                            "ETAT_INIT/SIGM");
+    cauchyToPiolaKirchhoff(system, U, stresses);
+  }
   if (state.variables) {
     std::vector<std::string> names;
     for (int v = 1; v <= system.internalVariableCount(); ++v) names.push_back("V" + std::to_string(v));
