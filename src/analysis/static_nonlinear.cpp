@@ -93,6 +93,10 @@ struct StaticNonlinear::Iteration {
   bool dirichletMet = true;      // U holds the imposed values
   std::string contact;           // the terms' status when the residual was measured (for the observers)
   bool refactored = false;
+  Eigen::VectorXd correction;    // the Newton correction dU of this iteration
+  bool fixedKept = false;        // dU leaves the fixed unknowns (and the relations) as they were
+  int lineSearchTrials = -1;     // residuals the line search evaluated (-1: no line search)
+  double rho = 1;                // the coefficient it chose
 };
 
 bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::vector<double>& history,
@@ -167,6 +171,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     }
     if (it.residualFirst) assemble(U, t1, true);  // same state: same residual, and now the tangent
     factorAndSolve(U, step, it);
+    searchLine(U, step, it);
     report(it, !it.refactored ? "" : it.elastic ? "ELASTIQUE" : "TANGENTE");
     step.statusChanged = terms_ ? terms_->updateStatus(U) : false;
   }
@@ -337,10 +342,10 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
   }
   for (int i = 0; i < n_; ++i)
     if (step.fixed[i]) rhs(i) = dUc(i);
-  Eigen::VectorXd dU;
-  solver.solve(rhs, dU);
+  solver.solve(rhs, it.correction);
   stats_.solveSeconds += seconds(solveStart);
-  U += dU;
+  it.fixedKept = dUc.lpNorm<Eigen::Infinity>() == 0;
+  U += it.correction;
 }
 
 // With linear relations: dU = T dv + g_d, where g_d = (T U + g) - U brings U onto the
@@ -367,7 +372,34 @@ void StaticNonlinear::solveWithRelations(Eigen::VectorXd& U, const Step& step, I
   Eigen::VectorXd dv;
   solver_->solver->solve(rhs, dv);
   stats_.solveSeconds += seconds(solveStart);
-  U += e.expand(dv) - e.offset() + gd;
+  it.correction = e.expand(dv) - e.offset() + gd;
+  it.fixedKept = gd.lpNorm<Eigen::Infinity>() == 0;
+  U += it.correction;
+}
+
+// RECH_LINEAIRE: U = U_before + rho dU with f(rho) = dU . r(U_before + rho dU) near zero.
+// The fixed unknowns and the relations hold along dU when it leaves them as they were,
+// so r's rows there do not enter (dU is zero on them, or, with relations, the projection
+// is T^T r's). Not on the prediction, whose correction brings in the imposed values.
+void StaticNonlinear::searchLine(Eigen::VectorXd& U, const Step& step, Iteration& it) {
+  if (!settings_.lineSearch || it.k == 0 || !it.fixedKept) return;
+  const Eigen::VectorXd& dU = it.correction;
+  const Eigen::VectorXd start = U - dU;
+  const double f0 = dU.dot(r_);  // r_ is the residual at the start of the iteration
+  auto functional = [&](double rho, double& f) {
+    try {
+      assemble(start + rho * dU, step.t1, false);
+    } catch (const InvalidStateError&) {
+      return false;  // too long a step: the search keeps the best rho before it
+    }
+    f = dU.dot(r_);
+    return std::isfinite(f);
+  };
+  const LineSearchOutcome found = lineSearch(settings_.lineSearchSettings, f0, functional);
+  stats_.lineSearchTrials += found.trials;
+  it.lineSearchTrials = found.trials;
+  it.rho = found.rho;
+  U = start + found.rho * dU;
 }
 
 void StaticNonlinear::factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it) {
@@ -413,6 +445,8 @@ void StaticNonlinear::report(const Iteration& it, const char* matrix) const {
   done.matrix = matrix;
   done.seconds = seconds(it.start);
   done.contact = it.contact;
+  done.lineSearchTrials = it.lineSearchTrials;
+  done.rho = it.rho;
   for (NewtonObserver* o : observers_) o->iterationDone(done);
 }
 

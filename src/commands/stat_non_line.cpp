@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
+#include "commands/archiving.hpp"
 #include "commands/contact_concept.hpp"
 #include "core/number_format.hpp"
 #include "commands/field_concepts.hpp"
@@ -118,6 +120,21 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   settings.method = solveur.text("METHODE");
   settings.renum = solveur.text("RENUM");
   settings.nprec = solveur.text("STOP_SINGULIER") == "NON" ? 0 : static_cast<int>(solveur.integer("NPREC"));
+  if (k.has("RECH_LINEAIRE")) {
+    const auto& rl = k.factor("RECH_LINEAIRE").front();
+    auto& ls = settings.lineSearchSettings;
+    settings.lineSearch = true;
+    ls.method = rl.text("METHODE") == "MIXTE" ? analysis::LineSearchSettings::Method::Mixte
+                                              : analysis::LineSearchSettings::Method::Corde;
+    ls.resiLineRela = rl.real("RESI_LINE_RELA");
+    ls.iterLineMaxi = static_cast<int>(rl.integer("ITER_LINE_MAXI"));
+    ls.rhoMin = rl.real("RHO_MIN");
+    ls.rhoMax = rl.real("RHO_MAX");
+    ls.rhoExcl = rl.real("RHO_EXCL");
+    if (!(ls.rhoMin < ls.rhoMax))
+      throw Error("RECH_LINEAIRE: RHO_MIN (" + format::asterValue(ls.rhoMin) + ") must be less than RHO_MAX (" +
+                  format::asterValue(ls.rhoMax) + ")");
+  }
   return settings;
 }
 
@@ -175,7 +192,10 @@ void reportStatistics(const analysis::StaticNonlinear& newtonSolver, const analy
                 "%d unknowns; %.3f s (assembly %.3f s, linear solver %.3f s)",
                 instants, st.iterations, st.factorizations, st.cuts, newtonSolver.unknownCount(),
                 st.totalSeconds, st.assemblySeconds, st.solveSeconds);
-  Messages::info(buf);
+  std::string line = buf;
+  if (settings.lineSearch)
+    line += "; line search: " + std::to_string(st.lineSearchTrials) + " residuals evaluated";
+  Messages::info(line);
   if (info >= 2) {
     const auto& ls = newtonSolver.solverStatistics();
     char flops[48] = "flops not reported";
@@ -211,8 +231,10 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     terms = analysis::makeContactTerms(system, contact->zones, contact->settings);
   }
   analysis::StaticNonlinear newtonSolver(system, terms.get(), settings);
-  analysis::ConvergenceTable table(terms != nullptr);
+  analysis::ConvergenceTable table(terms != nullptr, settings.lineSearch);
   if (k.integer("INFO") >= 1) newtonSolver.addObserver(table);
+
+  const Archiving archiving(k.factor("ARCHIVAGE").front(), times);
 
   // The result: continued (reuse) from the initial instant, or new with the initial state.
   std::shared_ptr<ResultConcept> result =
@@ -233,6 +255,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     system.evaluate(U.head(system.dofCount()), times.front(), fint, fext, nullptr, nullptr);
     const Eigen::VectorXd reactions = fint - fext;
     result->instants.push_back(resultInstant(system, terms.get(), times.front(), U, fint, &reactions, true, false));
+    archiving.strip(result->instants.back());
   }
 
   // Every instant goes to disk as soon as it is in the result.
@@ -245,20 +268,42 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   }
   Messages::info("STAT_NON_LINE: each converged instant is written to " + archive.path().string());
 
-  // Run: each converged instant is stored as it comes.
-  auto store = [&](const analysis::ConvergedInstant& c) {
-    ResultInstant inst = resultInstant(system, terms.get(), c.time, *c.U, *c.internalForces, c.reactions);
+  // Run: each converged instant ARCHIVAGE keeps is stored as it comes. The last converged
+  // one is stored too when a later one fails (or Ctrl-C), as code_aster does: it is kept
+  // aside until the next converges.
+  std::size_t step = 0;
+  std::optional<ResultInstant> pending;
+  auto add = [&](ResultInstant inst) {
     inst.index = static_cast<int>(result->instants.size());
-    inst.newtonIterations = c.iterations;
     archive.add(inst);  // an instant that is not on disk (full disk) is not in the result either
     result->instants.push_back(std::move(inst));
+  };
+  auto store = [&](const analysis::ConvergedInstant& c) {
+    ResultInstant inst = resultInstant(system, terms.get(), c.time, *c.U, *c.internalForces, c.reactions);
+    archiving.strip(inst);
+    inst.newtonIterations = c.iterations;
+    pending.reset();
+    if (archiving.stored(++step)) add(std::move(inst));
+    else pending = std::move(inst);
+  };
+  auto storePending = [&] {
+    if (!pending) return;
+    ResultInstant inst = std::move(*pending);
+    pending.reset();
+    try {
+      add(std::move(inst));
+    } catch (const Error&) {
+      // The failure being reported matters more than this instant.
+    }
   };
   try {
     newtonSolver.run(U, times, store);
   } catch (const Interrupted& e) {
+    storePending();
     throw Interrupted(e.what() + archive.storedNote("before it"));
   } catch (const Error& e) {
     // The converged instants stay in the result; the study stops here.
+    storePending();
     throw Error(e.what() + archive.storedNote("before the failure"));
   }
   reportStatistics(newtonSolver, settings, times.size() - 1, k.integer("INFO"));
