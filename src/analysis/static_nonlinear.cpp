@@ -1,5 +1,6 @@
 #include "analysis/static_nonlinear.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "core/number_format.hpp"
+#include "analysis/step_cutting.hpp"
 #include "linalg/blas_info.hpp"
 #include "linalg/linear_solver.hpp"
 
@@ -465,6 +467,7 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
   if (U.size() != n_) throw Error("internal error: the initial state has the wrong size");
   system_.acceptState(U);  // the initial state, reached from the natural one
   std::vector<double> history;
+  bool cutFloorReached = false;  // the failure is a step that would be cut below SUBD_PAS_MINI
   std::function<bool(double, double, int, std::string&)> interval = [&](double t0, double t1, int level,
                                                                         std::string& why) {
     const Eigen::VectorXd U0 = U, increment0 = previousIncrement_;
@@ -477,17 +480,43 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
     previousDt_ = dt0;
     steps_ = steps0;
     if (terms_) terms_->restoreStatus();
-    if (level >= settings_.subdNiveau || settings_.subdPas < 2) return false;
+    if (settings_.subdNiveau == 0) return false;  // ACTION='ARRET'
+    StepCut cut;
+    if (settings_.subdAuto) {
+      cut = automaticCut(history, settings_.useRela ? settings_.resiGlobRela : settings_.resiGlobMaxi,
+                         settings_.iterGlobMaxi);
+    } else {
+      if (level >= settings_.subdNiveau || settings_.subdPas < 2) return false;
+      cut.parts = settings_.subdPas;
+      cut.firstFraction = 1.0 / settings_.subdPas;
+    }
+    const std::vector<double> ends = subStepEnds(t0, t1, cut);
+    double shortest = ends.front() - t0;
+    for (std::size_t i = 1; i < ends.size(); ++i) shortest = std::min(shortest, ends[i] - ends[i - 1]);
+    // Without SUBD_PAS_MINI, AUTO (no level limit) stops at sub-steps at round-off of the instants.
+    const double floor = std::max(settings_.subdPasMini, 1e-12 * std::max(std::fabs(t0), std::fabs(t1)));
+    if (shortest < floor || shortest <= 0) {
+      why += "; cutting the step [" + scientific(t0, 6) + ", " + scientific(t1, 6) + "] into " +
+             std::to_string(cut.parts) + " would make a sub-step of " + scientific(shortest, 3) +
+             (settings_.subdPasMini > 0 ? ", below SUBD_PAS_MINI = " + scientific(settings_.subdPasMini, 3)
+                                        : ", at the round-off of the instants");
+      cutFloorReached = true;
+      return false;
+    }
     ++stats_.cuts;
+    const std::string how =
+        !settings_.subdAuto ? ""
+        : cut.extrapolated  ? " (SUBD_METHODE='AUTO', from the residuals' extrapolation: a first sub-step of " +
+                                 scientific(ends.front() - t0, 4) + ")"
+                            : " (SUBD_METHODE='AUTO', equal sub-steps: too few iterations to extrapolate)";
     Messages::alarm("STAT_NON_LINE", "instant " + scientific(t1, 6) + ": " + why + "; the step [" + scientific(t0, 4) +
-                                         ", " + scientific(t1, 4) + "] is cut into " +
-                                         std::to_string(settings_.subdPas) + " (level " + std::to_string(level + 1) +
-                                         ")");
-    for (NewtonObserver* o : observers_) o->stepCut(t0, t1, settings_.subdPas, level + 1, why);
-    for (int i = 1; i <= settings_.subdPas; ++i) {
-      const double a = t0 + (t1 - t0) * (i - 1) / settings_.subdPas;
-      const double b = (i == settings_.subdPas) ? t1 : t0 + (t1 - t0) * i / settings_.subdPas;
+                                         ", " + scientific(t1, 4) + "] is cut into " + std::to_string(cut.parts) +
+                                         how + " (level " + std::to_string(level + 1) + ")");
+    for (NewtonObserver* o : observers_) o->stepCut(t0, t1, cut.parts, level + 1, why);
+    double a = t0;
+    for (double b : ends) {
       if (!interval(a, b, level + 1, why)) return false;
+      a = b;
     }
     return true;
   };
@@ -503,9 +532,9 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
                                  "(the default NPREC names a free unknown)"
                                : "";
       throw Error("the instant " + scientific(times[k], 6) + " did not converge: " + why +
-                  (settings_.subdNiveau > 0 ? " (even after cutting the step " + std::to_string(settings_.subdNiveau) +
-                                                  " times)"
-                                            : "") +
+                  (settings_.subdNiveau > 0 && !settings_.subdAuto && !cutFloorReached
+                       ? " (even after cutting the step " + std::to_string(settings_.subdNiveau) + " times)"
+                       : "") +
                   singular);
     }
     Eigen::VectorXd reactions = r_;

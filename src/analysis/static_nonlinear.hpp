@@ -3,7 +3,8 @@
 // displacements eliminated (rows and columns replaced by the identity, which
 // keeps a symmetric tangent symmetric; with linear relations, the slave unknowns
 // by the transformation of linalg::ConstraintElimination), and automatic step cutting on failure
-// (DEFI_LIST_INST's ECHEC: SUBD_PAS sub-steps, at most SUBD_NIVEAU levels).
+// (DEFI_LIST_INST's ECHEC: SUBD_PAS sub-steps, at most SUBD_NIVEAU levels, or SUBD_METHODE='AUTO'
+// by the residuals' extrapolation (step_cutting.hpp); never below SUBD_PAS_MINI).
 //
 // Each Newton iteration runs the same stages, each a member function below: choose the
 // matrix (tangent, elastic, or the factorization kept), assemble, fix the unknowns
@@ -51,6 +52,8 @@ struct NewtonSettings {
   int nprec = 8;               // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
   int subdPas = 4;     // SUBD_PAS
   int subdNiveau = 3;  // SUBD_NIVEAU (0: no cutting)
+  bool subdAuto = false;    // SUBD_METHODE='AUTO' (step_cutting.hpp): no level limit
+  double subdPasMini = 0;   // SUBD_PAS_MINI: no sub-step shorter
   // RECH_LINEAIRE: a line search on each correction after the prediction.
   bool lineSearch = false;
   LineSearchSettings lineSearchSettings;

@@ -17,6 +17,7 @@
 #include "commands/model_concepts.hpp"
 #include "commands/result_archive.hpp"
 #include "commands/result_concepts.hpp"
+#include "commands/solver_choice.hpp"
 #include "commands/selection.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -30,14 +31,17 @@ namespace {
 
 // The instants of INCREMENT between INST_INIT (or NUME_INST_INIT; by default
 // `initialTime` when ETAT_INIT gives one, else the first of the list) and INST_FIN
-// (or NUME_INST_FIN), looked up with PRECISION (relative).
-std::vector<double> instantsOf(const Keywords& inc, int& subdPas, int& subdNiveau, const double* initialTime) {
+// (or NUME_INST_FIN), looked up with PRECISION (relative); a DEFI_LIST_INST gives `settings`
+// its step cutting.
+std::vector<double> instantsOf(const Keywords& inc, analysis::NewtonSettings& settings, const double* initialTime) {
   const ConceptPtr list = inc.conceptPtr("LIST_INST");
   std::vector<double> all;
   if (auto* li = dynamic_cast<ListInstConcept*>(list.get())) {
     all = li->times;
-    subdPas = li->subdPas;
-    subdNiveau = li->subdNiveau;
+    settings.subdPas = li->subdPas;
+    settings.subdNiveau = li->subdNiveau;
+    settings.subdAuto = li->subdAuto;
+    settings.subdPasMini = li->subdPasMini;
   } else {
     all = static_cast<RealListConcept&>(*list).values;
   }
@@ -116,10 +120,10 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   if (settings.useMaxi) settings.resiGlobMaxi = conv.real("RESI_GLOB_MAXI");
   settings.iterGlobMaxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
   settings.arret = conv.text("ARRET") == "OUI";
-  const auto& solveur = k.factor("SOLVEUR").front();
-  settings.method = solveur.text("METHODE");
-  settings.renum = solveur.text("RENUM");
-  settings.nprec = solveur.text("STOP_SINGULIER") == "NON" ? 0 : static_cast<int>(solveur.integer("NPREC"));
+  const SolverChoice choice = readSolveur(k.factor("SOLVEUR").front());
+  settings.method = choice.method;
+  settings.renum = choice.renum;
+  settings.nprec = choice.nprec;
   if (k.has("RECH_LINEAIRE")) {
     const auto& rl = k.factor("RECH_LINEAIRE").front();
     auto& ls = settings.lineSearchSettings;
@@ -218,8 +222,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   analysis::NewtonSettings settings = readNewtonSettings(k);
   const InitialState initial = readInitialState(k, session, *model, reuse);
   const double initialTime = initial.instant ? initial.instant->time : 0.0;
-  const auto times = instantsOf(k.factor("INCREMENT").front(), settings.subdPas, settings.subdNiveau,
-                                initial.instant ? &initialTime : nullptr);
+  const auto times = instantsOf(k.factor("INCREMENT").front(), settings, initial.instant ? &initialTime : nullptr);
 
   // Build: the system, the contact terms, the driver and its convergence table.
   analysis::MechanicalSystem system(problem);

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "../support/square_mesh.hpp"
+#include "stiffening_bar.hpp"
 #include "analysis/convergence_table.hpp"
 #include "analysis/line_search.hpp"
 #include "analysis/static_nonlinear.hpp"
@@ -14,6 +14,8 @@
 
 using namespace aster;
 using analysis::LineSearchSettings;
+using test_support::BarRun;
+using test_support::pullBar;
 
 namespace {
 
@@ -144,61 +146,13 @@ TEST(LineSearch, AFailedTrialStopsTheSearch) {
 
 namespace {
 
-// One QUAD4 of the unit square in plane strain, Saint Venant-Kirchhoff (GROT_GDEP) with
-// NU = 0: under a dead traction P on DROITE (DX = 0 on GAUCHE, DY = 0 on BAS) the stretch
-// l is uniform, the lateral one stays 1, and P = E l (l^2 - 1) / 2. From the tangent at rest
-// (E), the first Newton step u = P / E overshoots the root far: the response stiffens.
-struct BarRun {
-  double u = 0;  // DX of DROITE
-  int iterations = 0;
-  bool converged = true;
-};
-
-BarRun pullBar(double P, bool lineSearch, int iterGlobMaxi) {
-  auto m = std::make_shared<mesh::Mesh>(test_support::squareMesh(1, mesh::CellType::QUAD4));
-  auto model = std::make_shared<model::Model>(m);
-  std::vector<int> all(m->cellCount());
-  for (int c = 0; c < m->cellCount(); ++c) all[c] = c;
-  model->assign(all, model::Modelisation::PlaneStrain);
-  auto material = std::make_shared<model::ElasticMaterial>();
-  material->E = 1.0;
-  material->NU = 0.0;
-  auto materials = std::make_shared<model::MaterialField>(m->cellCount());
-  materials->assign(all, material);
-  model::MechanicalLoad load;
-  load.imposed.push_back({m->nodesOfCells(m->cellGroup("GAUCHE")), 0, model::SpaceFunction(0.0)});
-  load.imposed.push_back({m->nodesOfCells(m->cellGroup("BAS")), 1, model::SpaceFunction(0.0)});
-  load.edgeForces.push_back({m->cellGroup("DROITE"), model::SpaceFunction(P), model::SpaceFunction(0.0)});
-  analysis::MechanicalProblem problem;
-  problem.model = model;
-  problem.materials = materials;
-  problem.loads.push_back({&load, nullptr});
-  problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::GreenLagrange);
-  analysis::MechanicalSystem system(problem);
+analysis::NewtonSettings barSettings(bool lineSearch, int iterGlobMaxi) {
   analysis::NewtonSettings settings;
   settings.resiGlobRela = 1e-10;
   settings.iterGlobMaxi = iterGlobMaxi;
   settings.subdNiveau = 0;
   settings.lineSearch = lineSearch;
-  analysis::StaticNonlinear newton(system, nullptr, settings);
-  Eigen::VectorXd U = Eigen::VectorXd::Zero(newton.unknownCount());
-  BarRun out;
-  try {
-    newton.run(U, {0.0, 1.0}, [&](const analysis::ConvergedInstant& c) { out.iterations = c.iterations; });
-  } catch (const Error&) {
-    out.converged = false;
-    return out;
-  }
-  const int corner = m->nodesOfCells(m->cellGroup("DROITE")).front();
-  out.u = U(system.dof(corner, 0));
-  return out;
-}
-
-// The root of l (l^2 - 1) / 2 = P by Newton on the scalar equation (independent of the FE code).
-double stretchOf(double P) {
-  double l = 2;
-  for (int i = 0; i < 100; ++i) l -= (l * (l * l - 1) / 2 - P) / ((3 * l * l - 1) / 2);
-  return l;
+  return settings;
 }
 
 }  // namespace
@@ -208,18 +162,18 @@ double stretchOf(double P) {
 // to 1e-6); both reach the closed-form stretch.
 TEST(LineSearchDriver, ReachesConvergenceInFewerIterationsWhenNewtonOvershoots) {
   const double P = 20;
-  const BarRun plain = pullBar(P, false, 30);
-  const BarRun searched = pullBar(P, true, 30);
+  const BarRun plain = pullBar(P, barSettings(false, 30));
+  const BarRun searched = pullBar(P, barSettings(true, 30));
   ASSERT_TRUE(plain.converged);
   ASSERT_TRUE(searched.converged);
-  const double u = stretchOf(P) - 1;
+  const double u = test_support::stretchOf(P) - 1;
   EXPECT_NEAR(plain.u, u, 1e-8 * u);
   EXPECT_NEAR(searched.u, u, 1e-8 * u);
   EXPECT_LE(searched.iterations, plain.iterations - 3) << plain.iterations << " " << searched.iterations;
   // With ITER_GLOB_MAXI between the two counts, only the line search converges.
   const int maxi = searched.iterations;
-  EXPECT_FALSE(pullBar(P, false, maxi).converged);
-  EXPECT_TRUE(pullBar(P, true, maxi).converged);
+  EXPECT_FALSE(pullBar(P, barSettings(false, maxi)).converged);
+  EXPECT_TRUE(pullBar(P, barSettings(true, maxi)).converged);
 }
 
 // With RECH_LINEAIRE the table has code_aster's RECH. LINE. columns (trials, rho), blank
