@@ -468,6 +468,10 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
   system_.acceptState(U);  // the initial state, reached from the natural one
   std::vector<double> history;
   bool cutFloorReached = false;  // the failure is a step that would be cut below SUBD_PAS_MINI
+  // The shortest sub-step without SUBD_PAS_MINI: at the round-off of the instants.
+  const double roundOff =
+      times.empty() ? 0.0
+                    : 1e-12 * std::max({std::fabs(times.front()), std::fabs(times.back()), times.back() - times.front()});
   std::function<bool(double, double, int, std::string&)> interval = [&](double t0, double t1, int level,
                                                                         std::string& why) {
     const Eigen::VectorXd U0 = U, increment0 = previousIncrement_;
@@ -494,7 +498,7 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
     double shortest = ends.front() - t0;
     for (std::size_t i = 1; i < ends.size(); ++i) shortest = std::min(shortest, ends[i] - ends[i - 1]);
     // Without SUBD_PAS_MINI, AUTO (no level limit) stops at sub-steps at round-off of the instants.
-    const double floor = std::max(settings_.subdPasMini, 1e-12 * std::max(std::fabs(t0), std::fabs(t1)));
+    const double floor = std::max(settings_.subdPasMini, roundOff);
     if (shortest < floor || shortest <= 0) {
       why += "; cutting the step [" + scientific(t0, 6) + ", " + scientific(t1, 6) + "] into " +
              std::to_string(cut.parts) + " would make a sub-step of " + scientific(shortest, 3) +

@@ -122,3 +122,18 @@ TEST(AutomaticCut, NoSubStepBelowSubdPasMini) {
   ASSERT_FALSE(automatic.converged);
   EXPECT_NE(automatic.error.find("below SUBD_PAS_MINI = 2.000E-01"), std::string::npos) << automatic.error;
 }
+
+// AUTO has no level limit: a step that never converges (ITER_GLOB_MAXI = 1, too few
+// residuals to extrapolate: 4 equal sub-steps each time) is cut until its sub-steps would
+// fall below the round-off of the instants (1e-12 of the span 1: 0.25^20 = 9.1e-13 after
+// 19 cuts), and the computation stops there.
+TEST(AutomaticCut, WithoutSubdPasMiniTheCuttingStopsAtTheRoundOffOfTheInstants) {
+  analysis::NewtonSettings settings;
+  settings.resiGlobRela = 1e-300;
+  settings.iterGlobMaxi = 1;
+  settings.subdAuto = true;
+  const auto run = test_support::pullBar(20, settings, true);
+  ASSERT_FALSE(run.converged);
+  EXPECT_NE(run.error.find("at the round-off of the instants"), std::string::npos) << run.error;
+  EXPECT_EQ(run.statistics.cuts, 19);
+}
