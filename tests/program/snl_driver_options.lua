@@ -5,7 +5,7 @@
 -- traction P t on DROITE (nodal forces P/2 t at P2, P3; DX = 0 on GAUCHE, DY = 0 on BAS):
 -- the stretch l is uniform and P t = l (l^2 - 1) / 2. From the tangent at rest the first
 -- Newton step overshoots far. RECH_LINEAIRE (CORDE, MIXTE) converges in fewer iterations
--- than plain Newton (MIXTE with RHO_MAX = 1.5: with the default 10, its first expansion,
+-- than plain Newton, also with a linear relation (MIXTE with RHO_MAX = 1.5: with the default 10, its first expansion,
 -- rho = 3, takes the bar near its collapse, l = 0.12, where |f| is already below
 -- RESI_LINE_RELA |f(0)| and Newton then stalls: f is no merit function there); DEFI_LIST_INST's SUBD_METHODE='AUTO' cuts the step that fails with
 -- ITER_GLOB_MAXI = 7; SOLVEUR METHODE='MUMPS' (with MUMPS's own keywords) and 'LDLT' solve
@@ -35,7 +35,7 @@ local function run(list, options)
   local keys = {MODELE = MO, CHAM_MATER = CM, EXCIT = {{CHARGE = BC}, {CHARGE = PULL, FONC_MULT = RAMP}},
                 COMPORTEMENT = {RELATION = 'ELAS', DEFORMATION = 'GROT_GDEP'}, INCREMENT = {LIST_INST = list},
                 CONVERGENCE = {RESI_GLOB_RELA = 1e-10, ITER_GLOB_MAXI = options.maxi or 30}}
-  for k, v in pairs(options) do if k ~= 'maxi' then keys[k] = v end end
+  for k, v in pairs(options) do if k ~= 'maxi' then keys[k] = v end end  -- EXCIT too
   local R = STAT_NON_LINE(keys)
   local u = R:getField('DEPL', 1.0):getValues()
   near(u[3], stretch(P) - 1, 1e-8, 'DX of P2')  -- node N2 = P2
@@ -49,6 +49,12 @@ local mixte = run(L, {RECH_LINEAIRE = {METHODE = 'MIXTE', RHO_MAX = 1.5}})
 if not (corde <= plain - 3) then error(string.format('CORDE: %d iterations, plain Newton %d', corde, plain)) end
 if not (mixte < plain) then error(string.format('MIXTE: %d iterations, plain Newton %d', mixte, plain)) end
 if run(L, {maxi = corde, RECH_LINEAIRE = {}}) ~= corde then error('CORDE with ITER_GLOB_MAXI = its count') end
+-- With a linear relation (DROITE moves as one, LIAISON_UNIF DX: the solution already does)
+-- the search runs along the corrections of the master unknowns.
+UNIF = AFFE_CHAR_MECA{MODELE = MO, LIAISON_UNIF = {GROUP_MA = 'DROITE', DDL = 'DX'}}
+local related = run(L, {RECH_LINEAIRE = {},
+                        EXCIT = {{CHARGE = BC}, {CHARGE = UNIF}, {CHARGE = PULL, FONC_MULT = RAMP}}})
+if not (related <= plain - 3) then error(string.format('CORDE with LIAISON_UNIF: %d iterations, plain Newton %d', related, plain)) end
 
 -- The full step fails with 7 iterations; AUTO cuts it; only the instants of the list are stored.
 local _, p = run(AUTO, {maxi = 7})
