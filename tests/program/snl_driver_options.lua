@@ -5,9 +5,10 @@
 -- traction P t on DROITE (nodal forces P/2 t at P2, P3; DX = 0 on GAUCHE, DY = 0 on BAS):
 -- the stretch l is uniform and P t = l (l^2 - 1) / 2. From the tangent at rest the first
 -- Newton step overshoots far. RECH_LINEAIRE (CORDE, MIXTE) converges in fewer iterations
--- than plain Newton, also with a linear relation (MIXTE with RHO_MAX = 1.5: with the default 10, its first expansion,
--- rho = 3, takes the bar near its collapse, l = 0.12, where |f| is already below
--- RESI_LINE_RELA |f(0)| and Newton then stalls: f is no merit function there); DEFI_LIST_INST's SUBD_METHODE='AUTO' cuts the step that fails with
+-- than plain Newton, also with a linear relation. MIXTE with RHO_MAX = 1.5: with the
+-- default 10 its first expansion, rho = 3, takes the bar near its collapse (l = 0.12),
+-- where |f| is already below RESI_LINE_RELA |f(0)|, and Newton then stalls: f is no merit
+-- function there. DEFI_LIST_INST's SUBD_METHODE='AUTO' cuts the step that fails with
 -- ITER_GLOB_MAXI = 7; SOLVEUR METHODE='MUMPS' (with MUMPS's own keywords) and 'LDLT' solve
 -- as MULT_FRONT. Each gives the closed-form stretch.
 local P = 20.0
