@@ -83,6 +83,9 @@ struct ContactZone {
 
 struct ContactSettings {
   bool continueFormulation = false;  // FORMULATION='CONTINUE', else 'DISCRETE'
+  // LISSAGE='OUI' (CONTINUE only): the gap uses the smoothed master normals of
+  // contact/smoothed_normal.hpp (master nodes in at most two master cells).
+  bool smoothNormals = false;
   int info = 1;                      // INFO=2: the contact state of each converged instant is printed
 };
 

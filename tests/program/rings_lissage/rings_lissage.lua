@@ -1,0 +1,83 @@
+-- Two fitted concentric rings in contact (the set-up of code_aster's SSNP152):
+-- C1 (R2 <= r <= R1) around C2 (R3 <= r <= R2), E and NU alike, plane stress,
+-- GROT_GDEP, RELATION='ELAS'. The outer edge r = R1 and the inner edge r = R3
+-- are given the radial displacements of the closed-form (Lame) solution of an
+-- outer ring under an external pressure p pressing on the inner one: then the
+-- contact pressure is uniform,
+--   pc = 2 p R1^2 / ( R2^2 (1 - nu) + R1^2 (1 + nu)
+--                     + (R1^2 - R2^2) / (R2^2 - R3^2) (R2^2 (1 - nu) + R3^2 (1 + nu)) ),
+-- and in each ring u_r = ((1 - nu) a r + (1 + nu) b / r) / E with
+--   C1: a = (pc R2^2 - p R1^2) / (R1^2 - R2^2), b = (pc - p) R1^2 R2^2 / (R1^2 - R2^2)
+--   C2: a = -pc R2^2 / (R2^2 - R3^2),           b = -pc R2^2 R3^2 / (R2^2 - R3^2).
+-- CONTINUE contact, LISSAGE='OUI', master r = R2 on C1, slave on C2: LAGS_C
+-- must be -t pc at instant t (the displacements ramp with t). Meshes
+-- (rings_lissage.geo, levels 1 and 2): QUAD4, 32 and 64 cells around, 4 and 8
+-- across, the rings' nodes on r = R2 at the same places. Instants 0.1 and 1
+-- (strains about 1e-4 and 1e-3: GROT_GDEP departs from the linear Lame
+-- solution by about one strain). Checks: Newton converges within 4
+-- iterations at each instant (it takes 2); the relative L2 error of LAGS_C
+-- (POST_ERREUR LAGR_RELA) below 0.05 dtheta^2 + 2 t pc / E (dtheta the angle
+-- of a cell), and falling more than twice from level 1 to level 2 at t = 0.1.
+-- Found: level 1 1.00e-3 (t = 0.1) and 2.07e-3 (t = 1), level 2 3.74e-4 and
+-- 1.45e-3; with LISSAGE='NON' 2.61e-3, 3.68e-3, 7.75e-4, 1.85e-3 (the first
+-- above its tolerance): the smoothed normals make the pressure 2.6 times as
+-- accurate on the coarse mesh.
+DEBUT()
+R1, R2, R3 = 1.0, 0.6, 0.2
+E, NU, P = 1.0E9, 0.2, 1.0E6
+PC = 2 * P * R1^2 / ((R2^2 * (1 - NU) + R1^2 * (1 + NU)) +
+                     (R1^2 - R2^2) / (R2^2 - R3^2) * (R2^2 * (1 - NU) + R3^2 * (1 + NU)))
+local a1, b1 = (PC * R2^2 - P * R1^2) / (R1^2 - R2^2), (PC - P) * R1^2 * R2^2 / (R1^2 - R2^2)
+local a2, b2 = -PC * R2^2 / (R2^2 - R3^2), -PC * R2^2 * R3^2 / (R2^2 - R3^2)
+UR1 = ((1 - NU) * a1 * R1 + (1 + NU) * b1 / R1) / E
+UR3 = ((1 - NU) * a2 * R3 + (1 + NU) * b2 / R3) / E
+print(string.format('RINGS: pc = %.10e, u_r(R1) = %.10e, u_r(R3) = %.10e', PC, UR1, UR3))
+UX1 = FORMULE{VALE = 'UR1*X/R1', NOM_PARA = {'X', 'Y'}, UR1 = UR1, R1 = R1}
+UY1 = FORMULE{VALE = 'UR1*Y/R1', NOM_PARA = {'X', 'Y'}, UR1 = UR1, R1 = R1}
+UX3 = FORMULE{VALE = 'UR3*X/R3', NOM_PARA = {'X', 'Y'}, UR3 = UR3, R3 = R3}
+UY3 = FORMULE{VALE = 'UR3*Y/R3', NOM_PARA = {'X', 'Y'}, UR3 = UR3, R3 = R3}
+RAMPE = DEFI_FONCTION{NOM_PARA = 'INST', VALE = {0, 0, 1, 1}}
+LINST = DEFI_LIST_REEL{VALE = {0.0, 0.1, 1.0}}
+MAT = DEFI_MATERIAU{ELAS = {E = E, NU = NU}}
+
+local errors = {}
+for level = 1, 2 do
+  DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 19, FICHIER = 'rings_lissage_' .. level .. '.msh'}
+  local MA = LIRE_MAILLAGE{FORMAT = 'GMSH', UNITE = 19}
+  DEFI_FICHIER{ACTION = 'LIBERER', UNITE = 19}
+  MA = MODI_MAILLAGE{reuse = MA, MAILLAGE = MA, ORIE_PEAU_2D = {
+    {GROUP_MA = 'S1R1'}, {GROUP_MA = 'S1R2'}, {GROUP_MA = 'S2R2'}, {GROUP_MA = 'S2R3'}}}
+  local MO = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'C_PLAN'}}
+  local RESU = STAT_NON_LINE{MODELE = MO,
+    CHAM_MATER = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MAT}},
+    EXCIT = {{CHARGE = AFFE_CHAR_MECA_F{MODELE = MO, DDL_IMPO = {
+                {GROUP_MA = 'S1R1', DX = UX1, DY = UY1}, {GROUP_MA = 'S2R3', DX = UX3, DY = UY3}}},
+              FONC_MULT = RAMPE}},
+    CONTACT = DEFI_CONTACT{MODELE = MO, FORMULATION = 'CONTINUE', LISSAGE = 'OUI',
+                           ZONE = {GROUP_MA_MAIT = 'S1R2', GROUP_MA_ESCL = 'S2R2', CONTACT_INIT = 'OUI'}},
+    COMPORTEMENT = {RELATION = 'ELAS', DEFORMATION = 'GROT_GDEP'},
+    INCREMENT = {LIST_INST = LINST}, NEWTON = {REAC_ITER = 1}, CONVERGENCE = {ITER_GLOB_MAXI = 4}}
+  errors[level] = {}
+  for i, t in ipairs({0.1, 1.0}) do
+    local U = CREA_CHAMP{TYPE_CHAM = 'NOEU_DEPL_R', OPERATION = 'EXTR', RESULTAT = RESU, NOM_CHAM = 'DEPL', INST = t}
+    errors[level][i] = POST_ERREUR{OPTION = 'LAGR_RELA', CHAM_GD = U, MODELE = MO, GROUP_MA = 'S2R2',
+      LAGS_C = FORMULE{VALE = '-T*PC', NOM_PARA = {'X', 'Y'}, PC = PC, T = t}}:get('ERREUR', 1)
+    print(string.format('RINGS: level %d, instant %.1f, relative L2 error of LAGS_C %.3e', level, t, errors[level][i]))
+  end
+end
+-- Tolerance: 0.05 dtheta^2 for the mesh (dtheta = pi / 2 / nt; the relative
+-- sag of a chord is dtheta^2 / 8) plus 2 t PC / E, twice the strain, for
+-- GROT_GDEP against the linear solution.
+for level = 1, 2 do
+  local dtheta = math.pi / 2 / (8 * 2^(level - 1))
+  for i, t in ipairs({0.1, 1.0}) do
+    local tol = 0.05 * dtheta^2 + 2 * t * PC / E
+    if not (errors[level][i] < tol) then
+      error(string.format('level %d, instant %.1f: LAGS_C error %.3e above %.3e', level, t, errors[level][i], tol))
+    end
+  end
+end
+local ratio = errors[1][1] / errors[2][1]
+print(string.format('RINGS: error ratio level 1 / level 2 at instant 0.1 = %.2f', ratio))
+if not (ratio > 2) then error(string.format('the LAGS_C error falls by %.2f only from level 1 to 2', ratio)) end
+FIN()
