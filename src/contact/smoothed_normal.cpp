@@ -15,6 +15,12 @@ namespace {
 
 using std::sqrt;
 
+double valueOf(double x) { return x; }
+template <int N>
+double valueOf(const expr::Dual2<N>& x) {
+  return x.v;
+}
+
 // Coordinates of patch node j in the variables z: z[2 + 2j], z[3 + 2j]
 // (z[0], z[1] are the slave point's).
 template <class T>
@@ -33,6 +39,10 @@ void nodeNormal(const T* z, const NormalPatch& patch, int a, T& nx, T& ny) {
     sy -= tx / len;
   }
   const T s = sqrt(sx * sx + sy * sy);
+  // Unit normals summing to ~0: cells around the node oriented against each other.
+  if (!(valueOf(s) > 1e-6))
+    throw Error("contact LISSAGE: the master cells around a node have opposite normals (orient them alike, "
+                "MODI_MAILLAGE ORIE_PEAU)");
   nx = sx / s;
   ny = sy / s;
 }

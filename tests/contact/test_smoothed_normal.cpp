@@ -136,6 +136,11 @@ TEST(SmoothedNormal, NodeNormalIsTheMeanOfTheCellsNormals) {
   EXPECT_NEAR((smoothedNodeNormal(pq, 0) - (nEnd + nStart).normalized()).norm(), 0, 1e-15);
   EXPECT_NEAR((smoothedNodeNormal(pq, 2) - Vector2d(0, 1)).norm(), 0, 1e-15);
   EXPECT_GT(angle(nEnd, nStart), 0.1);  // the two cells' normals differ there
+  // Two cells walked against each other: their normals cancel, refused.
+  Line bad;
+  bad.x = {{0, 0}, {1, 0}, {2, 0}};
+  bad.cells = {{0, 1}, {2, 1}};
+  EXPECT_THROW(smoothedNodeNormal(patchOf(bad, 0), 1), aster::Error);
 }
 
 TEST(SmoothedNormal, ConvergesToTheRadiusFasterThanTheFacetNormal) {

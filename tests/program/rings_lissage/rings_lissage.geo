@@ -1,12 +1,13 @@
 // Two concentric rings touching along r = R2: C1 (R2 <= r <= R1) and C2
 // (R3 <= r <= R2), each of four structured quarter-annuli of QUAD4, with their
 // own nodes on r = R2 (the same positions: the contact surfaces are fitted).
-// `level` (gmsh -setnumber level K) halves the cells K - 1 times.
+// `level` (gmsh -setnumber level K): QUAD4 halved K - 1 times for K = 1, 2;
+// K = 3: level 1's cells as QUAD8 (SEG3 contact surfaces).
 DefineConstant[ level = 1 ];
 R1 = 1.0;
 R2 = 0.6;
 R3 = 0.2;
-k = 2^(level - 1);
+k = level == 3 ? 1 : 2^(level - 1);
 nt = 8 * k;  // cells along each quarter circle
 nr = 4 * k;  // cells across each ring
 
@@ -39,6 +40,10 @@ Transfinite Curve {10:13, 20:23, 30:33, 40:43} = nt + 1;
 Transfinite Curve {100:103, 200:203} = nr + 1;
 Transfinite Surface {100:103, 200:203};
 Recombine Surface {100:103, 200:203};
+If (level == 3)
+  Mesh.ElementOrder = 2;
+  Mesh.SecondOrderIncomplete = 1;
+EndIf
 
 Physical Surface("C1") = {100:103};
 Physical Surface("C2") = {200:203};
