@@ -150,8 +150,10 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     }
     // Map of the gap's DOFs q = (x_s, master or patch nodes) to cell DOFs: x_s = sum Ns_a x_a.
     const int nq = static_cast<int>(patches ? sg.gradient.size() : ng.gradient.size());
+    // The force direction f: the gap's variation, or along the smoothed normal (smoothed_normal.hpp).
     auto dg = [&](int p) { return patches ? sg.gradient(p) : ng.gradient(p); };
-    auto d2g = [&](int p, int r) { return patches ? sg.hessian(p, r) : ng.hessian(p, r); };
+    auto f = [&](int p) { return patches ? sg.force(p) : ng.gradient(p); };
+    auto df = [&](int p, int r) { return patches ? sg.forceJacobian(p, r) : ng.hessian(p, r); };
     const int mo = out.masterOffsets[mp.segment];
     auto scatter = [&](int p, auto&& f) {
       if (p < 2) {
@@ -164,13 +166,13 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     const double g = st.gap, aug = penalised ? lambda : lambda + rho * g;
     for (int p = 0; p < nq; ++p) {
       scatter(p, [&](int I, double wI) {
-        out.residual(I) += W * aug * wI * dg(p);
+        out.residual(I) += W * aug * wI * f(p);
         for (int v = 0; v < nm; ++v) {
-          out.tangent(I, lo + v) += W * wI * L(v) * dg(p);
+          out.tangent(I, lo + v) += W * wI * L(v) * f(p);
           out.tangent(lo + v, I) += W * wI * L(v) * dg(p);
         }
         for (int r = 0; r < nq; ++r) {
-          const double k = W * (aug * d2g(p, r) + rho * dg(p) * dg(r));
+          const double k = W * (aug * df(p, r) + rho * f(p) * dg(r));
           scatter(r, [&](int Jd, double wJ) { out.tangent(I, Jd) += wI * wJ * k; });
         }
       });

@@ -66,9 +66,11 @@
 //   [LAGS_C node 1, LAGS_C node 2 (, LAGS_C node 3 in Quadratic mode on a SEG3)]
 // (derivatives w.r.t. displacements = w.r.t. current coordinates).
 // Smoothed master normals (LISSAGE='OUI', smoothed_normal.hpp): given a patch
-// per master segment, the gap uses the smoothed normal and the segment's
-// block of the layout holds its patch's nodes (its own nodes first) instead
-// of its nodes alone; the tangent stays exact.
+// per master segment, the gap uses the smoothed normal n~, the force terms
+// (lambda + rho g) dg and lambda dg take dg~ (along n~, n~ and the projection
+// held) in place of dg, and the segment's block of the layout holds its
+// patch's nodes (its own nodes first) instead of its nodes alone. The tangent
+// is still the exact derivative of the residual, but not symmetric.
 #pragma once
 #include <vector>
 

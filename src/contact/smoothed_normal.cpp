@@ -51,6 +51,8 @@ template <class T>
 struct GapTerms {
   T gap;       // (x_s - x_m(xi)) . n~(xi)
   T residual;  // (x_s - x_m(xi)) . dx_m/dxi, 0 at the closest point
+  T nx, ny;    // n~(xi)
+  T N[3];      // the segment's shape functions at xi
 };
 
 template <class T>
@@ -76,7 +78,13 @@ GapTerms<T> evaluate(const T* z, const Segment& segment, const NormalPatch& patc
     my += N[a] * ny;
   }
   const T m = sqrt(mx * mx + my * my);
-  return {(ax * mx + ay * my) / m, ax * cx + ay * cy};
+  GapTerms<T> t;
+  t.nx = mx / m;
+  t.ny = my / m;
+  t.gap = ax * t.nx + ay * t.ny;
+  t.residual = ax * cx + ay * cy;
+  for (int a = 0; a < 3; ++a) t.N[a] = a < M ? N[a] : T(0.0);
+  return t;
 }
 
 void checkPatch(const Segment& segment, const NormalPatch& patch) {
@@ -119,6 +127,24 @@ SmoothedGap linearize(const Eigen::Vector2d& xs, const Segment& segment, const N
   out.gap = G.v;
   out.gradient.resize(nq);
   out.hessian.resize(nq, nq);
+  // The force direction: n~ at x_s, -N_a n~ at the segment's node a, 0 at the other patch nodes.
+  std::vector<const D*> force(nq, nullptr);
+  std::vector<D> owned;
+  owned.reserve(2 * segment.nodes());
+  force[0] = &t.nx;
+  force[1] = &t.ny;
+  for (int a = 0; a < segment.nodes(); ++a) {
+    owned.push_back(-(t.N[a] * t.nx));
+    owned.push_back(-(t.N[a] * t.ny));
+  }
+  for (int a = 0; a < segment.nodes(); ++a) force[2 + 2 * a] = &owned[2 * a], force[3 + 2 * a] = &owned[2 * a + 1];
+  out.force.setZero(nq);
+  out.forceJacobian.setZero(nq, nq);
+  for (int i = 0; i < nq; ++i)
+    if (force[i]) {
+      out.force(i) = force[i]->v;
+      for (int j = 0; j < nq; ++j) out.forceJacobian(i, j) = force[i]->g[j];
+    }
   if (projection.status == ProjectionStatus::Clamped) {
     for (int i = 0; i < nq; ++i) {
       out.gradient(i) = G.g[i];
@@ -136,6 +162,9 @@ SmoothedGap linearize(const Eigen::Vector2d& xs, const Segment& segment, const N
   }
   Eigen::VectorXd dxi(nq);
   for (int i = 0; i < nq; ++i) dxi(i) = -R.g[i] / rxi;
+  for (int i = 0; i < nq; ++i)
+    if (force[i])
+      for (int j = 0; j < nq; ++j) out.forceJacobian(i, j) += force[i]->g[ix] * dxi(j);
   for (int i = 0; i < nq; ++i) out.gradient(i) = G.g[i] + G.g[ix] * dxi(i);
   for (int i = 0; i < nq; ++i)
     for (int j = 0; j < nq; ++j) {

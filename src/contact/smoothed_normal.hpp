@@ -15,11 +15,18 @@
 // smoothly graded SEG2 mesh (the facet normal: O(h)), and n~ is continuous
 // from one segment to the next.
 //
+// The contact force acts along n~, as in code_aster: its virtual work is
+// (lambda + rho g) dg~ with dg~ = n~ . (dx_s - sum_a N_a(xi*) dy_a), n~ and
+// xi* held, while the gap equations use g itself. (The exact variation of g
+// is along the cell's own normal at a point lying on the cell: a slave point
+// on a master vertex would be pushed along one cell's normal or the other's
+// from one iteration to the next.) The contact tangent is the exact
+// derivative of these terms, hence not symmetric.
 // g depends on x_s, the segment's nodes and, through the n_a, on the nodes of
-// the cells around the segment's nodes: the segment's PATCH. Its first and
-// second derivatives are exact (forward second-order dual numbers on
-// z = (x_s, patch nodes, xi), then xi*(q) eliminated as in gap.hpp), so the
-// contact tangent stays the exact derivative of the residual.
+// the cells around the segment's nodes: the segment's PATCH. g, its first and
+// second derivatives, and the force direction with its first derivatives are
+// exact (forward second-order dual numbers on z = (x_s, patch nodes, xi),
+// then xi*(q) eliminated as in gap.hpp).
 #pragma once
 #include <array>
 #include <vector>
@@ -57,6 +64,11 @@ struct SmoothedGap {
   double gap = 0;
   Eigen::VectorXd gradient;  // dg/dq, q = (x_s, patch nodes): size 2 + 2 * patch nodes
   Eigen::MatrixXd hessian;   // d2g/dq2, symmetric
+  // The direction of the contact force, the variation of the gap with n~ and
+  // the projection held: dg~ = n~ . (dx_s - sum_a N_a(xi*) dy_a) (code_aster's),
+  // and its derivative d(force)/dq (xi*(q) and n~(q) varying).
+  Eigen::VectorXd force;
+  Eigen::MatrixXd forceJacobian;
 };
 
 // g at a given (Inside or Clamped) projection of xs on `segment`, with its
