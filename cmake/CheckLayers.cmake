@@ -14,7 +14,7 @@ set(ASTER_LAYERS
   "fem:core mesh linalg"
   "model:core mesh expr mechanics"
   "mechanics:core expr mesh fem"
-  "contact:core mesh fem"
+  "contact:core expr mesh fem"
   "analysis:core expr linalg mesh fem model mechanics contact"
   "post:core mesh fem expr"
   "comm:core"

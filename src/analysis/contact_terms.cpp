@@ -1,6 +1,7 @@
 #include "analysis/contact_terms.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -9,6 +10,7 @@
 #include "contact/discrete.hpp"
 #include "contact/gap.hpp"
 #include "contact/projection.hpp"
+#include "contact/smoothed_normal.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
 #include "core/number_format.hpp"
@@ -378,6 +380,7 @@ class ContinueContact final : public ContactBase {
         cells_.push_back(sc);
       }
     }
+    if (settings_.smoothNormals) buildPatches();
     lagsResidual_.assign(lagsNodes_.size(), 0.0);
     fixed_.assign(lagsNodes_.size(), 0);
     for (int k : fixedLags_) fixed_[k] = 1;
@@ -529,10 +532,68 @@ class ContinueContact final : public ContactBase {
     bool contact = false;
     double gap = 0, pressure = 0;
   };
+  // The mesh nodes of master cell s of a zone's smoothed-normal patch (its
+  // own first), and the patch's facets (smoothed_normal.hpp).
+  struct PatchTopology {
+    std::vector<int> nodes;
+    std::array<std::vector<contact::NormalPatch::Facet>, 3> facets;
+  };
+  void buildPatches() {
+    patches_.resize(zones_.size());
+    for (std::size_t z = 0; z < zones_.size(); ++z) {
+      const auto& cells = zones_[z].masterCells;
+      std::map<int, std::vector<int>> cellsAt;  // master node -> master cells (zone indices)
+      for (std::size_t s = 0; s < cells.size(); ++s)
+        for (int n : mesh_.cellNodes(cells[s])) cellsAt[n].push_back(static_cast<int>(s));
+      for (int c : cells) {
+        PatchTopology t;
+        const auto own = mesh_.cellNodes(c);
+        t.nodes.assign(own.begin(), own.end());
+        auto index = [&](int node) {
+          const auto it = std::find(t.nodes.begin(), t.nodes.end(), node);
+          if (it != t.nodes.end()) return static_cast<int>(it - t.nodes.begin());
+          t.nodes.push_back(node);
+          return static_cast<int>(t.nodes.size()) - 1;
+        };
+        for (int a = 0; a < static_cast<int>(own.size()); ++a) {
+          const auto& around = cellsAt[own[a]];
+          if (around.size() > 2)
+            throw Error("DEFI_CONTACT LISSAGE='OUI': master node " + mesh_.nodeName(own[a]) + " belongs to " +
+                        std::to_string(around.size()) + " master cells; smoothing needs a master line (at most two)");
+          for (int s : around) {
+            const auto en = mesh_.cellNodes(cells[s]);
+            contact::NormalPatch::Facet f;
+            f.type = mesh_.cellType(cells[s]) == mesh::CellType::SEG3 ? fem::CellType::SEG3 : fem::CellType::SEG2;
+            for (int b = 0; b < static_cast<int>(en.size()); ++b) {
+              f.node[b] = index(en[b]);
+              if (en[b] == own[a]) f.xi = b == 0 ? -1.0 : b == 1 ? 1.0 : 0.0;
+            }
+            t.facets[a].push_back(f);
+          }
+        }
+        patches_[z].push_back(std::move(t));
+      }
+    }
+  }
+  // The patch of master cell s (zone index) at U.
+  contact::NormalPatch patch(int zone, int s, const Eigen::VectorXd& U) const {
+    const PatchTopology& t = patches_[zone][s];
+    contact::NormalPatch p;
+    for (int n : t.nodes) p.nodes.push_back(position(n, &U));
+    p.facets = t.facets;
+    return p;
+  }
   std::vector<int> cellDofs(const SlaveCell& sc) const {
     std::vector<int> dofs;
     appendDofs(sc.cell, dofs);
-    for (int s : sc.candidates) appendDofs(zones_[sc.zone].masterCells[s], dofs);
+    for (int s : sc.candidates) {
+      if (settings_.smoothNormals) {
+        const auto& n = patches_[sc.zone][s].nodes;
+        system_.dofMap().appendNodeDofs(n.data(), n.data() + n.size(), 2, dofs);
+      } else {
+        appendDofs(zones_[sc.zone].masterCells[s], dofs);
+      }
+    }
     for (int v = 0; v < sc.count; ++v) dofs.push_back(first_ + sc.lags[v]);
     return dofs;
   }
@@ -566,7 +627,13 @@ class ContinueContact final : public ContactBase {
     for (int s : sc.candidates) m.push_back(segment(zones_[sc.zone].masterCells[s], &U));
     contact::ContinueOptions o = options_[sc.zone];
     o.forcedStatus = forced(sc.zone, initial);
-    contact::continueCellTerms(slave, m, o, terms_);
+    if (!settings_.smoothNormals) {
+      contact::continueCellTerms(slave, m, o, terms_);
+      return;
+    }
+    std::vector<contact::NormalPatch> p;
+    for (int s : sc.candidates) p.push_back(patch(sc.zone, s, U));
+    contact::continueCellTerms(slave, m, o, terms_, &p);
   }
   // Per slave node (slaveNodes_ order): the criterion of the integration
   // points evaluated at the node, its gap and its pressure.
@@ -580,11 +647,16 @@ class ContinueContact final : public ContactBase {
       const auto [a, b] = pressureOf_[sn.node];
       if (a >= 0) s.pressure = 0.5 * (lags(a, U) + lags(b, U));
       const auto p = contact::projectOnMaster(position(sn.node, &U), m[sn.zone], projections_[sn.zone]);
+      const double gap = !p.paired() ? 0.0
+                         : settings_.smoothNormals
+                             ? contact::smoothedGap(position(sn.node, &U), m[sn.zone][p.segment],
+                                                    patch(sn.zone, p.segment, U), p.projection.xi)
+                             : p.projection.gap;
       if (!p.paired() || excluded_[sn.zone][sn.node]) {
-        s.gap = p.paired() ? p.projection.gap : 0.0;
+        s.gap = gap;
         continue;
       }
-      s.gap = p.projection.gap;
+      s.gap = gap;
       // A gap within round-off is closed, as at the integration points.
       const double g =
           s.gap > 0 && contact::gapIsClosed(s.gap, position(sn.node, &U), m[sn.zone][p.segment]) ? 0.0 : s.gap;
@@ -599,6 +671,7 @@ class ContinueContact final : public ContactBase {
   }
 
   std::vector<contact::ContinueOptions> options_;  // per zone
+  std::vector<std::vector<PatchTopology>> patches_;  // LISSAGE: per zone, per master cell
   std::vector<SlaveCell> cells_;
   std::vector<int> lagsNodes_;
   std::vector<double> lagsShare_;  // int L_v dGamma_0

@@ -83,6 +83,10 @@ struct ContactZone {
 
 struct ContactSettings {
   bool continueFormulation = false;  // FORMULATION='CONTINUE', else 'DISCRETE'
+  // LISSAGE='OUI' (CONTINUE only): the gap (JEU of CONT_NOEU too) and the
+  // contact force use the smoothed master normals of contact/smoothed_normal.hpp
+  // (master nodes in at most two master cells); the tangent is not symmetric.
+  bool smoothNormals = false;
   int info = 1;                      // INFO=2: the contact state of each converged instant is printed
 };
 

@@ -17,6 +17,8 @@ struct NewtonIteration {
   const char* matrix = "";  // "TANGENTE" or "ELASTIQUE" when a matrix was factorized, else ""
   double seconds = 0;   // its wall time
   std::string contact;  // how contact stood when the residual was measured ("" without contact terms)
+  int lineSearchTrials = -1;  // RECH_LINEAIRE: residuals evaluated on its correction (-1: no line search)
+  double rho = 1;             // the coefficient of its correction the line search chose
 };
 
 class NewtonObserver {

@@ -1,5 +1,6 @@
 #include "analysis/static_nonlinear.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "core/number_format.hpp"
+#include "analysis/step_cutting.hpp"
 #include "linalg/blas_info.hpp"
 #include "linalg/linear_solver.hpp"
 
@@ -93,6 +95,10 @@ struct StaticNonlinear::Iteration {
   bool dirichletMet = true;      // U holds the imposed values
   std::string contact;           // the terms' status when the residual was measured (for the observers)
   bool refactored = false;
+  Eigen::VectorXd correction;    // the Newton correction dU of this iteration
+  bool fixedKept = false;        // dU leaves the fixed unknowns (and the relations) as they were
+  int lineSearchTrials = -1;     // residuals the line search evaluated (-1: no line search)
+  double rho = 1;                // the coefficient it chose
 };
 
 bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::vector<double>& history,
@@ -167,6 +173,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     }
     if (it.residualFirst) assemble(U, t1, true);  // same state: same residual, and now the tangent
     factorAndSolve(U, step, it);
+    searchLine(U, step, it);
     report(it, !it.refactored ? "" : it.elastic ? "ELASTIQUE" : "TANGENTE");
     step.statusChanged = terms_ ? terms_->updateStatus(U) : false;
   }
@@ -337,10 +344,10 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
   }
   for (int i = 0; i < n_; ++i)
     if (step.fixed[i]) rhs(i) = dUc(i);
-  Eigen::VectorXd dU;
-  solver.solve(rhs, dU);
+  solver.solve(rhs, it.correction);
   stats_.solveSeconds += seconds(solveStart);
-  U += dU;
+  it.fixedKept = dUc.lpNorm<Eigen::Infinity>() == 0;
+  U += it.correction;
 }
 
 // With linear relations: dU = T dv + g_d, where g_d = (T U + g) - U brings U onto the
@@ -367,7 +374,34 @@ void StaticNonlinear::solveWithRelations(Eigen::VectorXd& U, const Step& step, I
   Eigen::VectorXd dv;
   solver_->solver->solve(rhs, dv);
   stats_.solveSeconds += seconds(solveStart);
-  U += e.expand(dv) - e.offset() + gd;
+  it.correction = e.expand(dv) - e.offset() + gd;
+  it.fixedKept = gd.lpNorm<Eigen::Infinity>() == 0;
+  U += it.correction;
+}
+
+// RECH_LINEAIRE: U = U_before + rho dU with f(rho) = dU . r(U_before + rho dU) near zero.
+// The fixed unknowns and the relations hold along dU when it leaves them as they were,
+// so r's rows there do not enter (dU is zero on them, or, with relations, the projection
+// is T^T r's). Not on the prediction, whose correction brings in the imposed values.
+void StaticNonlinear::searchLine(Eigen::VectorXd& U, const Step& step, Iteration& it) {
+  if (!settings_.lineSearch || it.k == 0 || !it.fixedKept) return;
+  const Eigen::VectorXd& dU = it.correction;
+  const Eigen::VectorXd start = U - dU;
+  const double f0 = dU.dot(r_);  // r_ is the residual at the start of the iteration
+  auto functional = [&](double rho, double& f) {
+    try {
+      assemble(start + rho * dU, step.t1, false);
+    } catch (const InvalidStateError&) {
+      return false;  // too long a step: the search keeps the best rho before it
+    }
+    f = dU.dot(r_);
+    return std::isfinite(f);
+  };
+  const LineSearchOutcome found = lineSearch(settings_.lineSearchSettings, f0, functional);
+  stats_.lineSearchTrials += found.trials;
+  it.lineSearchTrials = found.trials;
+  it.rho = found.rho;
+  U = start + found.rho * dU;
 }
 
 void StaticNonlinear::factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it) {
@@ -413,6 +447,8 @@ void StaticNonlinear::report(const Iteration& it, const char* matrix) const {
   done.matrix = matrix;
   done.seconds = seconds(it.start);
   done.contact = it.contact;
+  done.lineSearchTrials = it.lineSearchTrials;
+  done.rho = it.rho;
   for (NewtonObserver* o : observers_) o->iterationDone(done);
 }
 
@@ -431,6 +467,11 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
   if (U.size() != n_) throw Error("internal error: the initial state has the wrong size");
   system_.acceptState(U);  // the initial state, reached from the natural one
   std::vector<double> history;
+  bool cutFloorReached = false;  // the failure is a step that would be cut below SUBD_PAS_MINI
+  // The shortest sub-step without SUBD_PAS_MINI: at the round-off of the instants.
+  const double roundOff =
+      times.empty() ? 0.0
+                    : 1e-12 * std::max({std::fabs(times.front()), std::fabs(times.back()), times.back() - times.front()});
   std::function<bool(double, double, int, std::string&)> interval = [&](double t0, double t1, int level,
                                                                         std::string& why) {
     const Eigen::VectorXd U0 = U, increment0 = previousIncrement_;
@@ -443,17 +484,43 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
     previousDt_ = dt0;
     steps_ = steps0;
     if (terms_) terms_->restoreStatus();
-    if (level >= settings_.subdNiveau || settings_.subdPas < 2) return false;
+    if (settings_.subdNiveau == 0) return false;  // ACTION='ARRET'
+    StepCut cut;
+    if (settings_.subdAuto) {
+      cut = automaticCut(history, settings_.useRela ? settings_.resiGlobRela : settings_.resiGlobMaxi,
+                         settings_.iterGlobMaxi);
+    } else {
+      if (level >= settings_.subdNiveau || settings_.subdPas < 2) return false;
+      cut.parts = settings_.subdPas;
+      cut.firstFraction = 1.0 / settings_.subdPas;
+    }
+    const std::vector<double> ends = subStepEnds(t0, t1, cut);
+    double shortest = ends.front() - t0;
+    for (std::size_t i = 1; i < ends.size(); ++i) shortest = std::min(shortest, ends[i] - ends[i - 1]);
+    // Without SUBD_PAS_MINI, AUTO (no level limit) stops at sub-steps at round-off of the instants.
+    const double floor = std::max(settings_.subdPasMini, roundOff);
+    if (shortest < floor || shortest <= 0) {
+      why += "; cutting the step [" + scientific(t0, 6) + ", " + scientific(t1, 6) + "] into " +
+             std::to_string(cut.parts) + " would make a sub-step of " + scientific(shortest, 3) +
+             (settings_.subdPasMini > 0 ? ", below SUBD_PAS_MINI = " + scientific(settings_.subdPasMini, 3)
+                                        : ", at the round-off of the instants");
+      cutFloorReached = true;
+      return false;
+    }
     ++stats_.cuts;
+    const std::string how =
+        !settings_.subdAuto ? ""
+        : cut.extrapolated  ? " (SUBD_METHODE='AUTO', from the residuals' extrapolation: a first sub-step of " +
+                                 scientific(ends.front() - t0, 4) + ")"
+                            : " (SUBD_METHODE='AUTO', equal sub-steps: too few iterations to extrapolate)";
     Messages::alarm("STAT_NON_LINE", "instant " + scientific(t1, 6) + ": " + why + "; the step [" + scientific(t0, 4) +
-                                         ", " + scientific(t1, 4) + "] is cut into " +
-                                         std::to_string(settings_.subdPas) + " (level " + std::to_string(level + 1) +
-                                         ")");
-    for (NewtonObserver* o : observers_) o->stepCut(t0, t1, settings_.subdPas, level + 1, why);
-    for (int i = 1; i <= settings_.subdPas; ++i) {
-      const double a = t0 + (t1 - t0) * (i - 1) / settings_.subdPas;
-      const double b = (i == settings_.subdPas) ? t1 : t0 + (t1 - t0) * i / settings_.subdPas;
+                                         ", " + scientific(t1, 4) + "] is cut into " + std::to_string(cut.parts) +
+                                         how + " (level " + std::to_string(level + 1) + ")");
+    for (NewtonObserver* o : observers_) o->stepCut(t0, t1, cut.parts, level + 1, why);
+    double a = t0;
+    for (double b : ends) {
       if (!interval(a, b, level + 1, why)) return false;
+      a = b;
     }
     return true;
   };
@@ -469,9 +536,9 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
                                  "(the default NPREC names a free unknown)"
                                : "";
       throw Error("the instant " + scientific(times[k], 6) + " did not converge: " + why +
-                  (settings_.subdNiveau > 0 ? " (even after cutting the step " + std::to_string(settings_.subdNiveau) +
-                                                  " times)"
-                                            : "") +
+                  (settings_.subdNiveau > 0 && !settings_.subdAuto && !cutFloorReached
+                       ? " (even after cutting the step " + std::to_string(settings_.subdNiveau) + " times)"
+                       : "") +
                   singular);
     }
     Eigen::VectorXd reactions = r_;

@@ -3,12 +3,14 @@
 // displacements eliminated (rows and columns replaced by the identity, which
 // keeps a symmetric tangent symmetric; with linear relations, the slave unknowns
 // by the transformation of linalg::ConstraintElimination), and automatic step cutting on failure
-// (DEFI_LIST_INST's ECHEC: SUBD_PAS sub-steps, at most SUBD_NIVEAU levels).
+// (DEFI_LIST_INST's ECHEC: SUBD_PAS sub-steps, at most SUBD_NIVEAU levels, or SUBD_METHODE='AUTO'
+// by the residuals' extrapolation (step_cutting.hpp); never below SUBD_PAS_MINI).
 //
 // Each Newton iteration runs the same stages, each a member function below: choose the
 // matrix (tangent, elastic, or the factorization kept), assemble, fix the unknowns
 // (imposed displacements and what the additional terms fix), measure the residual, test
-// convergence, eliminate the fixed unknowns from the matrix, factor and solve, report.
+// convergence, eliminate the fixed unknowns from the matrix, factor and solve, search
+// along the correction (RECH_LINEAIRE, line_search.hpp), report.
 // Reporting is telling the observers (newton_observer.hpp): the convergence table is one.
 #pragma once
 #include <functional>
@@ -19,6 +21,7 @@
 #include <Eigen/Core>
 
 #include "analysis/additional_terms.hpp"
+#include "analysis/line_search.hpp"
 #include "analysis/mechanical_system.hpp"
 #include "analysis/newton_observer.hpp"
 #include "linalg/linear_solver.hpp"
@@ -49,6 +52,11 @@ struct NewtonSettings {
   int nprec = 8;               // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
   int subdPas = 4;     // SUBD_PAS
   int subdNiveau = 3;  // SUBD_NIVEAU (0: no cutting)
+  bool subdAuto = false;    // SUBD_METHODE='AUTO' (step_cutting.hpp): no level limit
+  double subdPasMini = 0;   // SUBD_PAS_MINI: no sub-step shorter
+  // RECH_LINEAIRE: a line search on each correction after the prediction.
+  bool lineSearch = false;
+  LineSearchSettings lineSearchSettings;
 };
 
 struct ConvergedInstant {
@@ -63,6 +71,7 @@ struct ConvergedInstant {
 struct NewtonStatistics {
   int iterations = 0, factorizations = 0, cuts = 0;
   int tangentAssemblies = 0;  // residual and tangent; residuals alone are not counted
+  int lineSearchTrials = 0;   // residuals evaluated by the line search
   double assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;
 };
 
@@ -99,6 +108,7 @@ class StaticNonlinear {
   Verdict convergence(const Eigen::VectorXd& U, const Step& step, Iteration& it) const;
   void factorAndSolve(Eigen::VectorXd& U, const Step& step, Iteration& it);
   void solveWithRelations(Eigen::VectorXd& U, const Step& step, Iteration& it);
+  void searchLine(Eigen::VectorXd& U, const Step& step, Iteration& it);
   void factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it);
   // The factorization held eliminated the same fixed unknowns and relations as the step's.
   bool sameConstraints(const Step& step) const;

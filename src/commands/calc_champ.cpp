@@ -276,6 +276,7 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
     if (const CellField* stored = ResultConcept::cellField(inst, "SIEF_ELGA")) {
       sief = restricted(*stored, ctx.keep, "SIEF_ELGA");
     } else {
+      ResultConcept::requireNotExcluded(inst, "SIEF_ELGA");
       if (!ctx.linearResult)
         throw Error("SIEF_ELGA is not stored in the result at " + at + ": the stresses of an evol_noli are its own");
       CellField all = elasticStresses(ctx, ResultConcept::nodalField(inst, "DEPL"));

@@ -50,6 +50,7 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   analysis::ContactSettings settings;
   settings.continueFormulation = k.text("FORMULATION") == "CONTINUE";
   settings.info = static_cast<int>(k.integer("INFO"));
+  settings.smoothNormals = settings.continueFormulation && k.text("LISSAGE") == "OUI";
   const bool checkNormals = k.text("VERI_NORM") == "OUI";
   std::vector<analysis::ContactZone> zones;
   for (const auto& z : k.factor("ZONE")) {

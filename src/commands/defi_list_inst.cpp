@@ -20,8 +20,12 @@ ConceptPtr defiListInst(const Keywords& k, Session&, ConceptPtr) {
       out->subdNiveau = 0;
       continue;
     }
-    out->subdPas = static_cast<int>(e.integer("SUBD_PAS"));
-    out->subdNiveau = static_cast<int>(e.integer("SUBD_NIVEAU"));
+    out->subdAuto = e.text("SUBD_METHODE") == "AUTO";
+    out->subdPasMini = e.real("SUBD_PAS_MINI");
+    if (!out->subdAuto) {
+      out->subdPas = static_cast<int>(e.integer("SUBD_PAS"));
+      out->subdNiveau = static_cast<int>(e.integer("SUBD_NIVEAU"));
+    }
   }
   return out;
 }

@@ -12,6 +12,8 @@ class ListInstConcept : public Concept {
   std::vector<double> times;
   int subdPas = 4;
   int subdNiveau = 3;  // 0: stop at the first failure (ACTION='ARRET')
+  bool subdAuto = false;   // SUBD_METHODE='AUTO'
+  double subdPasMini = 0;  // SUBD_PAS_MINI
 };
 
 }  // namespace aster::lang

@@ -11,6 +11,7 @@
 #include "commands/model_concepts.hpp"
 #include "commands/result_archive.hpp"
 #include "commands/result_concepts.hpp"
+#include "commands/solver_choice.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
@@ -56,10 +57,10 @@ ConceptPtr mecaStatique(const Keywords& k, Session& session, ConceptPtr) {
   const auto times = instantsOf(k);
 
   analysis::LinearSettings settings;
-  const auto& solveur = k.factor("SOLVEUR").front();
-  settings.method = solveur.text("METHODE");
-  settings.renum = solveur.text("RENUM");
-  settings.nprec = solveur.text("STOP_SINGULIER") == "NON" ? 0 : static_cast<int>(solveur.integer("NPREC"));
+  const SolverChoice choice = readSolveur(k.factor("SOLVEUR").front());
+  settings.method = choice.method;
+  settings.renum = choice.renum;
+  settings.nprec = choice.nprec;
 
   analysis::MechanicalSystem system(problem);
   analysis::StaticLinear solver(system, settings);

@@ -1,5 +1,6 @@
 #include "commands/result_concepts.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -21,6 +22,12 @@ const ResultInstant& ResultConcept::last() const {
   return instants.back();
 }
 
+void ResultConcept::requireNotExcluded(const ResultInstant& i, const std::string& name) {
+  if (std::find(i.excluded.begin(), i.excluded.end(), name) != i.excluded.end())
+    throw Error("NOM_CHAM='" + name + "' is not stored in the result at INST=" + format::asterValue(i.time) +
+                ": STAT_NON_LINE was told not to store it (ARCHIVAGE/CHAM_EXCLU)");
+}
+
 const mesh::NodalField& ResultConcept::nodalField(const ResultInstant& i, const std::string& name) {
   std::string list;
   for (const auto& f : i.nodal) {
@@ -30,6 +37,7 @@ const mesh::NodalField& ResultConcept::nodalField(const ResultInstant& i, const 
   if (cellField(i, name))
     throw Error("NOM_CHAM='" + name + "' is a field on cells (ELGA or ELNO), not at nodes (nodal fields at INST=" +
                 format::asterValue(i.time) + ": " + list + ")");
+  requireNotExcluded(i, name);
   for (const auto& g : i.cells) list += (list.empty() ? "" : ", ") + g.name;
   throw Error("NOM_CHAM='" + name + "' is not stored in the result at INST=" + format::asterValue(i.time) +
               " (fields: " + list + ")");

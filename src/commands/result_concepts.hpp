@@ -69,6 +69,8 @@ struct ResultInstant {
   // GROUP_MA) is defined, sorted; a field not listed is defined at every node of the model.
   std::map<std::string, std::vector<int>> nodalSupport;
   int newtonIterations = 0;
+  // Fields the computation was told not to store (STAT_NON_LINE's ARCHIVAGE/CHAM_EXCLU).
+  std::vector<std::string> excluded;
 };
 
 // The physical quantity of a field of a result, as in TYPE_CHAM (ELNO_SIEF_R):
@@ -94,6 +96,8 @@ class ResultConcept : public Concept {
   // CRITERE='RELATIF'); throws aster::Error listing the instants otherwise.
   const ResultInstant& at(double time, double precision = 1e-6) const;
   const ResultInstant& last() const;
+  // Throws, saying so, when `name` was excluded from the instant (ARCHIVAGE/CHAM_EXCLU).
+  static void requireNotExcluded(const ResultInstant& i, const std::string& name);
   // A field of an instant by name; throws listing the available ones.
   static const mesh::NodalField& nodalField(const ResultInstant& i, const std::string& name);
   // A cell field (ELGA or ELNO) of an instant, or null.

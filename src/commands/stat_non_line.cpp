@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <Eigen/LU>
 
+#include "commands/archiving.hpp"
 #include "commands/contact_concept.hpp"
 #include "commands/elga_field.hpp"
 #include "core/number_format.hpp"
@@ -18,6 +20,7 @@
 #include "commands/model_concepts.hpp"
 #include "commands/result_archive.hpp"
 #include "commands/result_concepts.hpp"
+#include "commands/solver_choice.hpp"
 #include "commands/selection.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -35,14 +38,17 @@ namespace {
 
 // The instants of INCREMENT between INST_INIT (or NUME_INST_INIT; by default
 // `initialTime` when ETAT_INIT gives one, else the first of the list) and INST_FIN
-// (or NUME_INST_FIN), looked up with PRECISION (relative).
-std::vector<double> instantsOf(const Keywords& inc, int& subdPas, int& subdNiveau, const double* initialTime) {
+// (or NUME_INST_FIN), looked up with PRECISION (relative); a DEFI_LIST_INST gives `settings`
+// its step cutting.
+std::vector<double> instantsOf(const Keywords& inc, analysis::NewtonSettings& settings, const double* initialTime) {
   const ConceptPtr list = inc.conceptPtr("LIST_INST");
   std::vector<double> all;
   if (auto* li = dynamic_cast<ListInstConcept*>(list.get())) {
     all = li->times;
-    subdPas = li->subdPas;
-    subdNiveau = li->subdNiveau;
+    settings.subdPas = li->subdPas;
+    settings.subdNiveau = li->subdNiveau;
+    settings.subdAuto = li->subdAuto;
+    settings.subdPasMini = li->subdPasMini;
   } else {
     all = static_cast<RealListConcept&>(*list).values;
   }
@@ -155,10 +161,25 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   if (settings.useMaxi) settings.resiGlobMaxi = conv.real("RESI_GLOB_MAXI");
   settings.iterGlobMaxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
   settings.arret = conv.text("ARRET") == "OUI";
-  const auto& solveur = k.factor("SOLVEUR").front();
-  settings.method = solveur.text("METHODE");
-  settings.renum = solveur.text("RENUM");
-  settings.nprec = solveur.text("STOP_SINGULIER") == "NON" ? 0 : static_cast<int>(solveur.integer("NPREC"));
+  const SolverChoice choice = readSolveur(k.factor("SOLVEUR").front());
+  settings.method = choice.method;
+  settings.renum = choice.renum;
+  settings.nprec = choice.nprec;
+  if (k.has("RECH_LINEAIRE")) {
+    const auto& rl = k.factor("RECH_LINEAIRE").front();
+    auto& ls = settings.lineSearchSettings;
+    settings.lineSearch = true;
+    ls.method = rl.text("METHODE") == "MIXTE" ? analysis::LineSearchSettings::Method::Mixte
+                                              : analysis::LineSearchSettings::Method::Corde;
+    ls.resiLineRela = rl.real("RESI_LINE_RELA");
+    ls.iterLineMaxi = static_cast<int>(rl.integer("ITER_LINE_MAXI"));
+    ls.rhoMin = rl.real("RHO_MIN");
+    ls.rhoMax = rl.real("RHO_MAX");
+    ls.rhoExcl = rl.real("RHO_EXCL");
+    if (!(ls.rhoMin < ls.rhoMax))
+      throw Error("RECH_LINEAIRE: RHO_MIN (" + format::asterValue(ls.rhoMin) + ") must be less than RHO_MAX (" +
+                  format::asterValue(ls.rhoMax) + ")");
+  }
   return settings;
 }
 
@@ -352,7 +373,10 @@ void reportStatistics(const analysis::StaticNonlinear& newtonSolver, const analy
                 "%d unknowns; %.3f s (assembly %.3f s, linear solver %.3f s)",
                 instants, st.iterations, st.factorizations, st.cuts, newtonSolver.unknownCount(),
                 st.totalSeconds, st.assemblySeconds, st.solveSeconds);
-  Messages::info(buf);
+  std::string line = buf;
+  if (settings.lineSearch)
+    line += "; line search: " + std::to_string(st.lineSearchTrials) + " residuals evaluated";
+  Messages::info(line);
   if (info >= 2) {
     const auto& ls = newtonSolver.solverStatistics();
     char flops[48] = "flops not reported";
@@ -375,8 +399,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   analysis::NewtonSettings settings = readNewtonSettings(k);
   const InitialState initial = readInitialState(k, session, *model, reuse);
   const double initialTime = initial.instant ? initial.instant->time : 0.0;
-  const auto times = instantsOf(k.factor("INCREMENT").front(), settings.subdPas, settings.subdNiveau,
-                                initial.instant ? &initialTime : nullptr);
+  const auto times = instantsOf(k.factor("INCREMENT").front(), settings, initial.instant ? &initialTime : nullptr);
 
   // Build: the system, the contact terms, the driver and its convergence table.
   analysis::MechanicalSystem system(problem);
@@ -388,8 +411,10 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     terms = analysis::makeContactTerms(system, contact->zones, contact->settings);
   }
   analysis::StaticNonlinear newtonSolver(system, terms.get(), settings);
-  analysis::ConvergenceTable table(terms != nullptr);
+  analysis::ConvergenceTable table(terms != nullptr, settings.lineSearch);
   if (k.integer("INFO") >= 1) newtonSolver.addObserver(table);
+
+  const Archiving archiving(k.factor("ARCHIVAGE").front(), times);
 
   // The result: continued (reuse) from the initial instant, or new with the initial state.
   std::shared_ptr<ResultConcept> result =
@@ -412,6 +437,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
     system.evaluate(U.head(system.dofCount()), times.front(), fint, fext, nullptr, nullptr);
     const Eigen::VectorXd reactions = fint - fext;
     result->instants.push_back(resultInstant(system, terms.get(), times.front(), U, fint, &reactions, true, false));
+    archiving.strip(result->instants.back());
   }
 
   // Every instant goes to disk as soon as it is in the result.
@@ -424,20 +450,42 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   }
   Messages::info("STAT_NON_LINE: each converged instant is written to " + archive.path().string());
 
-  // Run: each converged instant is stored as it comes.
-  auto store = [&](const analysis::ConvergedInstant& c) {
-    ResultInstant inst = resultInstant(system, terms.get(), c.time, *c.U, *c.internalForces, c.reactions);
+  // Run: each converged instant ARCHIVAGE keeps is stored as it comes. The last converged
+  // one is stored too when a later one fails (or Ctrl-C), as code_aster does: it is kept
+  // aside until the next converges.
+  std::size_t step = 0;
+  std::optional<ResultInstant> pending;
+  auto add = [&](ResultInstant inst) {
     inst.index = static_cast<int>(result->instants.size());
-    inst.newtonIterations = c.iterations;
     archive.add(inst);  // an instant that is not on disk (full disk) is not in the result either
     result->instants.push_back(std::move(inst));
+  };
+  auto store = [&](const analysis::ConvergedInstant& c) {
+    ResultInstant inst = resultInstant(system, terms.get(), c.time, *c.U, *c.internalForces, c.reactions);
+    archiving.strip(inst);
+    inst.newtonIterations = c.iterations;
+    pending.reset();
+    if (archiving.stored(++step)) add(std::move(inst));
+    else pending = std::move(inst);
+  };
+  auto storePending = [&] {
+    if (!pending) return;
+    ResultInstant inst = std::move(*pending);
+    pending.reset();
+    try {
+      add(std::move(inst));
+    } catch (const Error&) {
+      // The failure being reported matters more than this instant.
+    }
   };
   try {
     newtonSolver.run(U, times, store);
   } catch (const Interrupted& e) {
+    storePending();
     throw Interrupted(e.what() + archive.storedNote("before it"));
   } catch (const Error& e) {
     // The converged instants stay in the result; the study stops here.
+    storePending();
     throw Error(e.what() + archive.storedNote("before the failure"));
   }
   reportStatistics(newtonSolver, settings, times.size() - 1, k.integer("INFO"));

@@ -312,6 +312,7 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
       rule.clear();
       continue;
     }
+    ResultConcept::requireNotExcluded(inst, name);
     for (const char* key : {"GROUP_MA", "MAILLE", "POINT", "SOUS_POINT"})
       if (occ.has(key))
         throw Error(occ.path + ": " + key + " designates a cell or a point of a field on cells; NOM_CHAM='" + name +

@@ -59,7 +59,7 @@ int multiplierCount(const SlaveCell& slave, const ContinueOptions& options) {
 }
 
 void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& masters, const ContinueOptions& options,
-                       ContinueCellTerms& out) {
+                       ContinueCellTerms& out, const std::vector<NormalPatch>* patches) {
   checkSegmentType(slave.type, "slave");
   const bool penalised = options.penalty != 0;
   if (penalised && !(options.penalty > 0 && std::isfinite(options.penalty)))
@@ -67,6 +67,8 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
   if (!penalised && !(options.rho > 0 && std::isfinite(options.rho)))
     throw Error("CONTINUE contact: COEF_CONT must be > 0, got " + std::to_string(options.rho));
   if (masters.empty()) throw Error("CONTINUE contact: no master segment given");
+  if (patches && patches->size() != masters.size())
+    throw Error("CONTINUE contact: LISSAGE needs one normal patch per master segment");
   const int ns = slave.type == fem::CellType::SEG3 ? 3 : 2;
   const int nm = multiplierCount(slave, options);
   if (nm == 3 && options.integration == ContactIntegration::Gauss && options.gaussPoints < 3)
@@ -77,7 +79,7 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
   for (std::size_t k = 0; k < masters.size(); ++k) {
     checkSegmentType(masters[k].type, "master");
     out.masterOffsets[k] = n;
-    n += 2 * masters[k].nodes();
+    n += 2 * (patches ? static_cast<int>((*patches)[k].nodes.size()) : masters[k].nodes());
   }
   out.lagrangeOffset = n;
   n += nm;
@@ -117,9 +119,15 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
 
     const MasterProjection mp = projectOnMaster(st.point, masters, options.projection);
     NodeGap ng;
+    SmoothedGap sg;
     if (mp.paired()) {
-      ng = linearizeGap(st.point, masters[mp.segment], mp.projection);
-      st.gap = ng.gap;
+      if (patches) {
+        sg = linearizeSmoothedGap(st.point, masters[mp.segment], (*patches)[mp.segment], mp.projection);
+        st.gap = sg.gap;
+      } else {
+        ng = linearizeGap(st.point, masters[mp.segment], mp.projection);
+        st.gap = ng.gap;
+      }
       st.masterSegment = mp.segment;
       st.masterXi = mp.projection.xi;
     }
@@ -140,8 +148,12 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
       }
       continue;
     }
-    // Map of the gap's DOFs q = (x_s, master nodes) to cell DOFs: x_s = sum Ns_a x_a.
-    const int nq = static_cast<int>(ng.gradient.size());
+    // Map of the gap's DOFs q = (x_s, master or patch nodes) to cell DOFs: x_s = sum Ns_a x_a.
+    const int nq = static_cast<int>(patches ? sg.gradient.size() : ng.gradient.size());
+    // The force direction f: the gap's variation, or along the smoothed normal (smoothed_normal.hpp).
+    auto dg = [&](int p) { return patches ? sg.gradient(p) : ng.gradient(p); };
+    auto f = [&](int p) { return patches ? sg.force(p) : ng.gradient(p); };
+    auto df = [&](int p, int r) { return patches ? sg.forceJacobian(p, r) : ng.hessian(p, r); };
     const int mo = out.masterOffsets[mp.segment];
     auto scatter = [&](int p, auto&& f) {
       if (p < 2) {
@@ -154,13 +166,13 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     const double g = st.gap, aug = penalised ? lambda : lambda + rho * g;
     for (int p = 0; p < nq; ++p) {
       scatter(p, [&](int I, double wI) {
-        out.residual(I) += W * aug * wI * ng.gradient(p);
+        out.residual(I) += W * aug * wI * f(p);
         for (int v = 0; v < nm; ++v) {
-          out.tangent(I, lo + v) += W * wI * L(v) * ng.gradient(p);
-          out.tangent(lo + v, I) += W * wI * L(v) * ng.gradient(p);
+          out.tangent(I, lo + v) += W * wI * L(v) * f(p);
+          out.tangent(lo + v, I) += W * wI * L(v) * dg(p);
         }
         for (int r = 0; r < nq; ++r) {
-          const double k = W * (aug * ng.hessian(p, r) + rho * ng.gradient(p) * ng.gradient(r));
+          const double k = W * (aug * df(p, r) + rho * f(p) * dg(r));
           scatter(r, [&](int Jd, double wJ) { out.tangent(I, Jd) += wI * wJ * k; });
         }
       });

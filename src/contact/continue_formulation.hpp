@@ -65,6 +65,12 @@
 //   [master segment 0 nodes x, y ...][master segment 1 ...] ...
 //   [LAGS_C node 1, LAGS_C node 2 (, LAGS_C node 3 in Quadratic mode on a SEG3)]
 // (derivatives w.r.t. displacements = w.r.t. current coordinates).
+// Smoothed master normals (LISSAGE='OUI', smoothed_normal.hpp): given a patch
+// per master segment, the gap uses the smoothed normal n~, the force terms
+// (lambda + rho g) dg and lambda dg take dg~ (along n~, n~ and the projection
+// held) in place of dg, and the segment's block of the layout holds its
+// patch's nodes (its own nodes first) instead of its nodes alone. The tangent
+// is still the exact derivative of the residual, but not symmetric.
 #pragma once
 #include <vector>
 
@@ -72,6 +78,7 @@
 
 #include "contact/projection.hpp"
 #include "contact/segment.hpp"
+#include "contact/smoothed_normal.hpp"
 
 namespace aster::contact {
 
@@ -140,8 +147,10 @@ struct ContinueCellTerms {
 };
 
 // Residual, tangent and point data of one slave cell against the master
-// segments (current coordinates). `out` is resized only when needed.
+// segments (current coordinates). `out` is resized only when needed. With
+// `patches` (one per master segment, whose first nodes are the segment's),
+// the normals are smoothed.
 void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& masters, const ContinueOptions& options,
-                       ContinueCellTerms& out);
+                       ContinueCellTerms& out, const std::vector<NormalPatch>* patches = nullptr);
 
 }  // namespace aster::contact

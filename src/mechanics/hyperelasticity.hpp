@@ -30,7 +30,8 @@ class Hyperelasticity final : public BehaviourLaw {
   // Throws aster::Error unless c10 + c01 > 0, bulk > 0 and hypothesis is D_PLAN or C_PLAN.
   Hyperelasticity(double c10, double c01, double c20, double bulk, PlaneHypothesis hypothesis);
 
-  // The bulk modulus K that code_aster derives from NU when K is not given.
+  // The bulk modulus K that code_aster derives from NU when K is not given, that of
+  // small-strain elasticity with mu = 2 (C10 + C01): K = 4 (C10 + C01) (1 + NU) / (3 (1 - 2 NU)).
   // Throws aster::Error unless -1 < nu < 0.5.
   static double bulkFromPoisson(double c10, double c01, double nu);
 

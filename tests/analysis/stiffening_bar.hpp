@@ -1,0 +1,73 @@
+// One QUAD4 of the unit square in plane strain, Saint Venant-Kirchhoff (GROT_GDEP) with
+// NU = 0: under a dead traction P on DROITE (DX = 0 on GAUCHE, DY = 0 on BAS) the stretch
+// l is uniform, the lateral one stays 1, and P = E l (l^2 - 1) / 2 (E = 1). From the
+// tangent at rest (E), the first Newton step u = P / E overshoots the root far: the
+// response stiffens. For the tests of the Newton driver's line search and step cutting.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "../support/square_mesh.hpp"
+#include "analysis/static_nonlinear.hpp"
+#include "core/error.hpp"
+#include "expr/expression.hpp"
+
+namespace aster::test_support {
+
+struct BarRun {
+  double u = 0;  // DX of DROITE at the last instant
+  int iterations = 0;  // of the last instant
+  bool converged = true;
+  std::string error;  // why it did not
+  analysis::NewtonStatistics statistics;
+};
+
+// ramp: the traction is P t over the instants 0, 1 (else P at every instant).
+inline BarRun pullBar(double P, const analysis::NewtonSettings& settings, bool ramp = false,
+                      analysis::NewtonObserver* observer = nullptr) {
+  auto m = std::make_shared<mesh::Mesh>(squareMesh(1, mesh::CellType::QUAD4));
+  auto model = std::make_shared<model::Model>(m);
+  std::vector<int> all(m->cellCount());
+  for (int c = 0; c < m->cellCount(); ++c) all[c] = c;
+  model->assign(all, model::Modelisation::PlaneStrain);
+  auto material = std::make_shared<model::ElasticMaterial>();
+  material->E = 1.0;
+  material->NU = 0.0;
+  auto materials = std::make_shared<model::MaterialField>(m->cellCount());
+  materials->assign(all, material);
+  model::MechanicalLoad load;
+  load.imposed.push_back({m->nodesOfCells(m->cellGroup("GAUCHE")), 0, model::SpaceFunction(0.0)});
+  load.imposed.push_back({m->nodesOfCells(m->cellGroup("BAS")), 1, model::SpaceFunction(0.0)});
+  load.edgeForces.push_back({m->cellGroup("DROITE"), model::SpaceFunction(P), model::SpaceFunction(0.0)});
+  analysis::MechanicalProblem problem;
+  problem.model = model;
+  problem.materials = materials;
+  problem.loads.push_back({&load, ramp ? expr::Expression::compile("INST", {"INST"}) : nullptr});
+  problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::GreenLagrange);
+  analysis::MechanicalSystem system(problem);
+  analysis::StaticNonlinear newton(system, nullptr, settings);
+  if (observer) newton.addObserver(*observer);
+  Eigen::VectorXd U = Eigen::VectorXd::Zero(newton.unknownCount());
+  BarRun out;
+  try {
+    newton.run(U, {0.0, 1.0}, [&](const analysis::ConvergedInstant& c) { out.iterations = c.iterations; });
+  } catch (const Error& e) {
+    out.converged = false;
+    out.error = e.what();
+  }
+  out.statistics = newton.statistics();
+  if (!out.converged) return out;
+  const int corner = m->nodesOfCells(m->cellGroup("DROITE")).front();
+  out.u = U(system.dof(corner, 0));
+  return out;
+}
+
+// The root of l (l^2 - 1) / 2 = P by Newton on the scalar equation (independent of the FE code).
+inline double stretchOf(double P) {
+  double l = 2;
+  for (int i = 0; i < 100; ++i) l -= (l * (l * l - 1) / 2 - P) / ((3 * l * l - 1) / 2);
+  return l;
+}
+
+}  // namespace aster::test_support
