@@ -83,8 +83,8 @@ for _, modelisation in ipairs({'D_PLAN', 'C_PLAN', 'AXIS'}) do
     return STAT_NON_LINE(k)
   end
   local R = run()
-  R = CALC_CHAMP{reuse = R, RESULTAT = R, NUME_ORDRE = {1, 2, 3}, VARI_INTERNE = {'VARI_ELNO'},
-                 DEFORMATION = {'EPSP_ELGA', 'EPSP_ELNO'}}
+  R = CALC_CHAMP{reuse = R, RESULTAT = R, NUME_ORDRE = {1, 2, 3}, VARI_INTERNE = {'VARI_ELNO', 'VARI_NOEU'},
+                 DEFORMATION = {'EPSP_ELGA', 'EPSP_ELNO', 'EPSP_NOEU'}}
   for _, t in ipairs({1.0, 2.0, 3.0}) do
     local s, v, ep = exact(modelisation, t)
     checkField(R, 'SIEF_ELGA', t, s, math.abs(s.SIYY), 16, modelisation)
@@ -92,6 +92,8 @@ for _, modelisation in ipairs({'D_PLAN', 'C_PLAN', 'AXIS'}) do
     checkField(R, 'VARI_ELNO', t, v, 1e-3, 8, modelisation)
     checkField(R, 'EPSP_ELGA', t, ep, 1e-3, 16, modelisation)
     checkField(R, 'EPSP_ELNO', t, ep, 1e-3, 16, modelisation)
+    checkField(R, 'EPSP_NOEU', t, ep, 1e-3, 16, modelisation)
+    checkField(R, 'VARI_NOEU', t, v, 1e-3, 8, modelisation)
   end
   local s3, v3, ep3 = exact(modelisation, 3.0)
   local function ref(x, scale) return {REFERENCE = 'ANALYTIQUE', VALE_REFE = x, VALE_CALC = x, PRECISION = 1e-9 * scale / math.max(math.abs(x), 1e-300), CRITERE = 'RELATIF'} end
