@@ -14,8 +14,8 @@
 --    SIYY = K e + 2 q / 3, SIXX = SIZZ = K e - q / 3.
 -- In both, the flow is along the axis: EPSP = p (-1/2, 1, -1/2, 0) (EPXX, EPYY, EPZZ,
 -- EPXY), V1 = p and V2 (INDIPLAS) = 1 in loading, 0 in unloading. Checked at every
--- Gauss point (SIEF_ELGA, VARI_ELGA, EPSP_ELGA) and cell node (VARI_ELNO, EPSP_ELNO) at
--- each instant, and by TEST_RESU. Then the restarts: a run stopped at INST 2 and
+-- Gauss point (SIEF_ELGA, VARI_ELGA, EPSP_ELGA), cell node (VARI_ELNO, EPSP_ELNO) and
+-- node (VARI_NOEU, EPSP_NOEU) at each instant, and by TEST_RESU. Then the restarts: a run stopped at INST 2 and
 -- continued with ETAT_INIT EVOL_NOLI (reuse), and one started from the fields of INST 2
 -- (ETAT_INIT DEPL, SIGM, VARI), give at INST 3 what the uninterrupted run gives (the
 -- unloading depends on the history: restarting from a zero stress would not).
