@@ -22,7 +22,7 @@ return OPER{ nom = 'CALC_CHAMP', sd_prod = {'evol_elas', 'evol_noli'}, reentrant
   SIMP{ 'DEFORMATION', typ = 'TXM', max = '**',
         into = {'EPSI_ELGA', 'EPSI_ELNO', 'EPSI_NOEU', 'EPSG_ELGA', 'EPSG_ELNO', 'EPSG_NOEU',
                 'EPSP_ELGA', 'EPSP_ELNO', 'EPSP_NOEU'},
-        fr = "Strains EPXX, EPYY, EPZZ, EPXY (tensor shear) from DEPL: EPSI linearized, EPSG Green-Lagrange; EPSP plastic, EPSI less the elastic strain of SIEF_ELGA (ELAS's E and NU; in C_PLAN EPZZ = -(EPXX + EPYY), the plastic strain being deviatoric), as code_aster in small strain." },
+        fr = "Strains EPXX, EPYY, EPZZ, EPXY (tensor shear) from DEPL: EPSI linearized, EPSG Green-Lagrange; EPSP plastic, EPSI less the elastic strain of SIEF_ELGA (ELAS's E and NU; in C_PLAN EPZZ = -(EPXX + EPYY), the plastic strain being deviatoric), as code_aster in small strain (refused on a GROT_GDEP result)." },
   SIMP{ 'CRITERES', typ = 'TXM', max = '**', into = {'SIEQ_ELGA', 'SIEQ_ELNO', 'SIEQ_NOEU'},
         fr = "Equivalent stresses: VMIS, TRESCA, PRIN_1..3, VMIS_SG, VECT_i_X/Y/Z, TRSIG, TRIAX." },
   SIMP{ 'FORCE', typ = 'TXM', max = '**', into = {'FORC_NODA', 'REAC_NODA'},

@@ -148,6 +148,7 @@ struct Context {
   std::vector<char> keep;        // per mesh cell: in `cells`
   std::vector<int> modelIndex;   // per mesh cell: its index in model->cells(), -1 when none
   bool linearResult = false;     // evol_elas
+  bool largeStrain = false;      // computed with DEFORMATION='GROT_GDEP'
   // Built on first use: the elastic system that computes SIEF_ELGA when the result lacks it.
   std::unique_ptr<analysis::MechanicalSystem> elasticSystem;
 };
@@ -352,6 +353,9 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
 
   // Plastic strains.
   if (asked(options, {"EPSP_ELGA", "EPSP_ELNO", "EPSP_NOEU"})) {
+    if (ctx.largeStrain)
+      throw Error("EPSP_ELGA is the small-strain plastic strain (EPSI less the elastic strain of SIEF_ELGA), and "
+                  "the result was computed with DEFORMATION='GROT_GDEP': it is not available there");
     CellField elga = plasticStrains(ctx, inst, at);
     if (options.count("EPSP_ELNO") || options.count("EPSP_NOEU")) {
       CellField elno = toNodes(elga, *ctx.model, "EPSP_ELNO");
@@ -418,6 +422,7 @@ ConceptPtr calcChamp(const Keywords& k, Session& session, ConceptPtr reuse) {
     ctx.materials = mat->field;
   }
   ctx.linearResult = source->typeName() == "evol_elas";
+  ctx.largeStrain = source->largeStrain;
   const auto& mesh = ctx.model->mesh();
   ctx.modelIndex.assign(mesh.cellCount(), -1);
   for (std::size_t i = 0; i < ctx.model->cells().size(); ++i) ctx.modelIndex[ctx.model->cells()[i]] = static_cast<int>(i);
@@ -442,6 +447,7 @@ ConceptPtr calcChamp(const Keywords& k, Session& session, ConceptPtr reuse) {
     result = std::make_shared<ResultConcept>(source->model, source->typeName());
     result->materials = source->materials;
     result->variableNames = source->variableNames;
+    result->largeStrain = source->largeStrain;
   }
   std::vector<ResultInstant*> instants = selectInstants(*source, k);
   if (!reuse) {

@@ -421,6 +421,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
       reuse ? std::static_pointer_cast<ResultConcept>(reuse) : std::make_shared<ResultConcept>(model);
   result->materials = problem.materials;
   result->variableNames = system.internalVariableNames();
+  for (auto kin : problem.kinematics) result->largeStrain |= kin == mechanics::Kinematics::GreenLagrange;
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newtonSolver.unknownCount());
   setInitialUnknowns(initial, system, U);
   setInitialLawState(initial, system, U);
