@@ -103,18 +103,6 @@ mesh::CellValues cellComponents(const mesh::Mesh& mesh, const CellField& f, cons
   return v;
 }
 
-// VTK names the components of an array: the internal variables V1, V2, ... of VARI_*
-// fields there take the laws' names (EPSPEQ, INDIPLAS, ...) when the result knows them.
-void nameVariables(const std::string& field, std::vector<std::string>& components,
-                   const std::vector<std::string>& names) {
-  if (names.empty() || field.rfind("VARI_", 0) != 0) return;
-  for (auto& c : components) {
-    if (c.size() < 2 || c[0] != 'V' || c.find_first_not_of("0123456789", 1) != std::string::npos) continue;
-    const std::size_t k = std::stoul(c.substr(1));
-    if (k >= 1 && k <= names.size()) c = names[k - 1];
-  }
-}
-
 Item resolve(const Keywords& occ, bool textFormat, bool vtk) {
   Item item;
   const std::vector<std::string> cmps = occ.texts("NOM_CMP");
@@ -172,8 +160,8 @@ Item resolve(const Keywords& occ, bool textFormat, bool vtk) {
       if (!textFormat)
         for (const CellField* g : gauss) fi.cellFields.push_back(cellComponents(*item.mesh, *g, cmps));
       if (vtk) {
-        for (auto& f : fi.fields) nameVariables(f.name, f.components, r->variableNames);
-        for (auto& f : fi.cellFields) nameVariables(f.name, f.components, r->variableNames);
+        for (auto& f : fi.fields) nameInternalVariables(f.name, f.components, r->variableNames);
+        for (auto& f : fi.cellFields) nameInternalVariables(f.name, f.components, r->variableNames);
       }
       item.instants.push_back(std::move(fi));
       item.cellFields.push_back(std::move(gauss));

@@ -447,6 +447,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   // Every instant goes to disk as soon as it is in the result.
   const std::string stem = session.uniqueOutputStem(session.assignedName.empty() ? "STAT_NON_LINE" : session.assignedName);
   ResultArchive archive(mesh, session.outputFile(stem + ".pvd"), &session.files);
+  archive.setVariableNames(result->variableNames);
   try {
     for (const auto& inst : result->instants) archive.add(inst);
   } catch (const Error& e) {
