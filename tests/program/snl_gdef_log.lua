@@ -15,6 +15,7 @@
 --    (REAC_NODA at the free DOFs) r_k of k = 1 ... 4 keeps r_k+1 / r_k^2 near a
 --    constant C, with C r_1 well below 1 (a linear rate would keep r_k+1 / r_k near a
 --    constant instead, and r_k+1 / r_k^2 would grow as r_k falls).
+-- 3. C_PLAN and AXIS in uniaxial stress (described at the end).
 local E, NU, a = 200.0, 0.3, 0.8
 local function near(x, y, tol, what)
   if not (math.abs(x - y) <= tol) then
@@ -104,4 +105,40 @@ for k = 2, 3 do
          string.format('not quadratic: r%d / r%d^2 = %.3e, r2 / r1^2 = %.3e', k + 1, k, ratio, C))
 end
 assert(r[4] < 1e-6, string.format('r4 = %.3e', r[4]))
+-- 3. C_PLAN (the same loads) and AXIS (the patch as a section r, z; DY = a t on HAUT,
+--    DY = 0 on BAS, r free): uniaxial stress, the lateral stretches l^-NU, the axial
+--    Cauchy stress E ln(l) / J with J = l^(1 - 2 NU), the others zero.
+local function uniaxial(modelisation, axial, loaded)
+  local M = AFFE_MODELE{MAILLAGE = MA,
+                        AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = modelisation}}
+  local held = {{GROUP_MA = 'BAS', DY = 0.0}}
+  if axial == 1 then held[2] = {GROUP_MA = 'GAUCHE', DX = 0.0} end
+  local pull = {GROUP_MA = loaded}
+  pull[axial == 1 and 'DX' or 'DY'] = a
+  local fixed = AFFE_CHAR_MECA{MODELE = M, DDL_IMPO = held}
+  local pulled = AFFE_CHAR_MECA{MODELE = M, DDL_IMPO = pull}
+  local Ru = STAT_NON_LINE{MODELE = M, CHAM_MATER = CM,
+                           EXCIT = {{CHARGE = fixed}, {CHARGE = pulled, FONC_MULT = RAMPE}},
+                           COMPORTEMENT = {RELATION = 'ELAS', DEFORMATION = 'GDEF_LOG'},
+                           CONVERGENCE = {RESI_GLOB_RELA = 1e-12, ITER_GLOB_MAXI = 20}, INCREMENT = {LIST_INST = L2}}
+  local l = 1 + a / 2
+  local lateral, J = l ^ -NU, l ^ (1 - 2 * NU)
+  local u = Ru:getField('DEPL', 1.0):getValues()
+  for n = 1, MA:getNumberOfNodes() do
+    local x, y = xyz[3 * n - 2], xyz[3 * n - 1]
+    local ex, ey = (axial == 1 and l or lateral) - 1, (axial == 2 and l or lateral) - 1
+    near(u[2 * n - 1], ex * x, 1e-10, string.format('%s: DX of node %d', modelisation, n))
+    near(u[2 * n], ey * y, 1e-10, string.format('%s: DY of node %d', modelisation, n))
+  end
+  local s = E * math.log(l) / J
+  local cauchy = {SIXX = axial == 1 and s or 0.0, SIYY = axial == 2 and s or 0.0, SIZZ = 0.0, SIXY = 0.0}
+  local sief = Ru:getField('SIEF_ELGA', 1.0)
+  local cmp, v = sief:getComponents(), sief:getValues()
+  for i = 1, #v do
+    local k = cmp[(i - 1) % #cmp + 1]
+    near(v[i], cauchy[k], 1e-9 * s, string.format('%s: SIEF_ELGA %s value %d', modelisation, k, i))
+  end
+end
+uniaxial('C_PLAN', 1, 'DROITE')
+uniaxial('AXIS', 2, 'HAUT')
 print('GDEF_LOG: every check passed')
