@@ -11,6 +11,17 @@ LogarithmicStrainLaw::LogarithmicStrainLaw(std::shared_ptr<const BehaviourLaw> l
   if (!law_) throw Error("internal error: DEFORMATION='GDEF_LOG' without a behaviour law");
 }
 
+std::vector<std::string> LogarithmicStrainLaw::internalVariableNames() const {
+  std::vector<std::string> names = law_->internalVariableNames();
+  const int own = law_->internalVariableCount();
+  if (static_cast<int>(names.size()) != own) {
+    names.clear();
+    for (int v = 1; v <= own; ++v) names.push_back("V" + std::to_string(v));
+  }
+  for (const char* name : {"TXX", "TYY", "TZZ", "TXY", "TXZ", "TYZ"}) names.emplace_back(name);
+  return names;
+}
+
 void LogarithmicStrainLaw::integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const {
   const bool planeStress = hypothesis() == PlaneHypothesis::PlaneStress;
   const double Ezz = planeStress ? 0.0 : in.strainZZ;  // not given in C_PLAN (nor needed: see the header)

@@ -18,6 +18,8 @@
 // gives E_zz = (exp(2 T_zz) - 1) / 2, which this law reports.
 #pragma once
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "mechanics/behaviour_law.hpp"
 
@@ -33,6 +35,8 @@ class LogarithmicStrainLaw final : public BehaviourLaw {
   const BehaviourLaw& law() const { return *law_; }
   PlaneHypothesis hypothesis() const override { return law_->hypothesis(); }
   int internalVariableCount() const override { return law_->internalVariableCount() + kStressVariables; }
+  // The law's names (V1, V2, ... where it gives none), then TXX, TYY, TZZ, TXY, TXZ, TYZ.
+  std::vector<std::string> internalVariableNames() const override;
   // in.strain: E; out.stress: S; out.tangent: dS/dE.
   void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const override;
 

@@ -3,15 +3,21 @@
 // current frame). Homogeneous uniaxial stretches (D_PLAN, C_PLAN, AXIS; rotated)
 // against that closed form, rigid motions stress free, the element tangent against
 // central differences of the internal force, and a law integrated incrementally
-// from the history (T_n, tau_n) giving the total response.
+// from the history (T_n, tau_n) giving the total response. With von Mises
+// plasticity (VMIS_ISOT_LINE): a bar in uniaxial tension and compression against
+// the closed form in log space, and the tangent of a plastic step from a plastic
+// state against central differences.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "mechanics/log_strain_law.hpp"
+#include "mechanics/von_mises_plasticity.hpp"
 #include "patch_support.hpp"
 
 using namespace aster;
@@ -251,6 +257,103 @@ TEST(GdefLog, IncrementalLawFromHistory) {
     EXPECT_LT((f - fTotal).norm(), 1e-11 * fTotal.norm());
     EXPECT_LT((K - KTotal).norm(), 1e-11 * KTotal.norm());
     for (int q = 0; q < n; ++q) EXPECT_EQ(v[7 * q], 2.0);
+  }
+}
+
+constexpr double kYield = 0.4, kHardening = 20.0;  // SY, D_SIGM_EPSI (ECRO_LINE): yield strain 2e-3
+
+std::shared_ptr<const BehaviourLaw> vonMises(PlaneHypothesis h) {
+  return std::make_shared<VonMisesPlasticity>(isotropicLinearParameters(kYoung, kPoisson, kHardening, kYield), h);
+}
+
+TEST(GdefLog, PlasticUniaxialPlaneStress) {
+  // A bar stretched to l in one step from the natural state: in log space the
+  // small-strain uniaxial response at e = ln l (one radial return is exact on this
+  // proportional path): |tau| = SY + ET (|e| - SY/E) (ET = D_SIGM_EPSI, the slope in
+  // the total strain), p = |e| - |tau|/E; the plastic flow is isochoric, so the
+  // lateral log strains are -NU tau/E - sign(e) p/2, and J = l exp(2 lateral).
+  using Element = LogElement<CellType::QUAD8>;
+  const auto X = distortedCell<CellType::QUAD8>(13);
+  const Element element(vonMises(PlaneHypothesis::PlaneStress), Kinematics::Logarithmic);
+  const int n = element.gaussPointCount(), count = element.internalVariableCount();
+  ASSERT_EQ(count, 8);
+  const std::vector<std::string> names = element.law().internalVariableNames();
+  const std::vector<std::string> expectedNames = {"EPSPEQ", "INDIPLAS", "TXX", "TYY", "TZZ", "TXY", "TXZ", "TYZ"};
+  EXPECT_EQ(names, expectedNames);
+  for (double l : {1.3, 0.75}) {
+    SCOPED_TRACE("stretch " + std::to_string(l));
+    const double e = std::log(l), sign = e > 0 ? 1.0 : -1.0;
+    const double tau = sign * (kYield + kHardening * (std::fabs(e) - kYield / kYoung));
+    const double p = std::fabs(e) - std::fabs(tau) / kYoung;
+    const double lateral = -kPoisson * tau / kYoung - sign * p / 2;
+    const double J = l * std::exp(2 * lateral), theta = 0.35;
+    const Eigen::Matrix2d R = rotation(theta);
+    const Eigen::Matrix2d F = R * Eigen::Vector2d(l, std::exp(lateral)).asDiagonal();
+    const Eigen::Matrix2d sigma = R * Eigen::Vector2d(tau / J, 0.0).asDiagonal() * R.transpose();
+    std::vector<double> s(4 * n), v(n * count), natural(n * count, 0.0);
+    ElementHistory history;
+    history.variables = natural.data();
+    element.gaussStresses(X, homogeneous<CellType::QUAD8>(X, F), history, s.data(), v.data(), true);
+    const double tol = 1e-10 * std::fabs(tau);
+    for (int q = 0; q < n; ++q) {
+      EXPECT_NEAR(s[4 * q + 0], sigma(0, 0), tol);
+      EXPECT_NEAR(s[4 * q + 1], sigma(1, 1), tol);
+      EXPECT_NEAR(s[4 * q + 2], 0.0, tol);
+      EXPECT_NEAR(s[4 * q + 3], sigma(0, 1), tol);
+      const double* vq = v.data() + q * count;
+      EXPECT_NEAR(vq[0], p, 1e-10 * p);  // EPSPEQ
+      EXPECT_EQ(vq[1], 1.0);             // INDIPLAS
+      EXPECT_NEAR(vq[2], tau, tol);      // TXX: tau in the frame of the stretch (T = diag(e, lateral))
+      for (int i = 3; i < 8; ++i) EXPECT_NEAR(vq[i], 0.0, tol) << names[i];
+    }
+  }
+}
+
+// A plastic step from a plastic state: the tangent against central differences of
+// the internal force from the same history.
+template <CellType T>
+void plasticTangentMatchesDifferences(PlaneHypothesis h) {
+  using Element = LogElement<T>;
+  SCOPED_TRACE(std::string(fem::cellName(T)) + " " + planeHypothesisName(h));
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> uni(-1, 1);
+  auto X = distortedCell<T>(50);
+  if (h == PlaneHypothesis::Axisymmetric) X.col(0).array() += 2.0;
+  const Element element(vonMises(h), Kinematics::Logarithmic);
+  const int n = element.gaussPointCount(), count = element.internalVariableCount();
+  typename Element::Vector un, u;
+  for (int i = 0; i < Element::dofs; ++i) un(i) = 0.1 * uni(rng);
+  for (int i = 0; i < Element::dofs; ++i) u(i) = 1.05 * un(i) + 0.002 * uni(rng);
+  std::vector<double> natural(n * count, 0.0), vn(n * count), sn(4 * n), v(n * count);
+  ElementHistory first;
+  first.variables = natural.data();
+  element.gaussStresses(X, un, first, sn.data(), vn.data());
+  ElementHistory history;
+  history.displacement = un.data();
+  history.stress = sn.data();
+  history.variables = vn.data();
+  typename Element::Vector f, fp, fm;
+  typename Element::Matrix K, D;
+  element.internalForce(X, u, history, v.data(), &f, &K);
+  int plastic = 0;
+  for (int q = 0; q < n; ++q) plastic += v[q * count + 1] == 1.0;
+  EXPECT_GT(plastic, 0);
+  const double step = 1e-6;
+  for (int j = 0; j < Element::dofs; ++j) {
+    typename Element::Vector up = u, um = u;
+    up(j) += step;
+    um(j) -= step;
+    element.internalForce(X, up, history, v.data(), &fp, nullptr);
+    element.internalForce(X, um, history, v.data(), &fm, nullptr);
+    D.col(j) = (fp - fm) / (2 * step);
+  }
+  EXPECT_LT((K - D).norm(), 1e-6 * K.norm());
+}
+
+TEST(GdefLog, PlasticTangentMatchesDifferences) {
+  for (auto h : {PlaneHypothesis::PlaneStrain, PlaneHypothesis::PlaneStress, PlaneHypothesis::Axisymmetric}) {
+    plasticTangentMatchesDifferences<CellType::QUAD4>(h);
+    plasticTangentMatchesDifferences<CellType::TRIA6>(h);
   }
 }
 
