@@ -22,22 +22,23 @@ double firstDifference(double ea, double eb) {
   return h / (2 * sum);
 }
 
-// g[c_a, c_b, c_c], symmetric in its arguments. Apart from nearly equal
-// arguments, the difference of first differences over the widest pair; otherwise
-// the Taylor series about the mean m: with d_i = c_i - m (sum zero),
-// g[.,.,.] = g''(m)/2 + g''''(m)/24 h2(d) + g'''''(m)/120 h3(d) + O(d^4), h2 = sum d^2 / 2,
-// h3 = sum d^3 / 3, g'' = -1/(2 m^2), g'''' = -3/m^4, g''''' = 12/m^5.
+// g[c_a, c_b, c_c] for the eigenvalues a, b, c (indices into e, first the
+// matrix of the first differences), symmetric in its arguments. Apart from nearly
+// equal arguments, the difference of first differences over the widest pair;
+// otherwise the Taylor series about the mean m: with d_i = c_i - m (sum zero),
+// g[.,.,.] = g2(m)/2 + g4(m)/24 h2(d) + g5(m)/120 h3(d) + O(d^4), gk the k-th derivative
+// of g: g2 = -1/(2 m^2), g4 = -3/m^4, g5 = 12/m^5; h2 = sum d^2 / 2, h3 = sum d^3 / 3.
 // Either way the relative error stays near 1e-12 (switch at a spread of 1e-3).
-double secondDifference(double ea, double eb, double ec) {
-  double e[3] = {ea, eb, ec};
-  std::sort(e, e + 3);
-  const double spread = 2 * (e[2] - e[0]);  // c_max - c_min
-  if (spread > 1e-3 * (1 + 2 * e[2]))
-    return (firstDifference(e[0], e[1]) - firstDifference(e[1], e[2])) / (2 * (e[0] - e[2]));
-  const double mean = (e[0] + e[1] + e[2]) / 3;
+double secondDifference(const double e[3], const Eigen::Matrix3d& first, int a, int b, int c) {
+  int i[3] = {a, b, c};
+  std::sort(i, i + 3, [&](int x, int y) { return e[x] < e[y]; });
+  const double lo = e[i[0]], mid = e[i[1]], hi = e[i[2]];
+  const double spread = 2 * (hi - lo);  // c_max - c_min
+  if (spread > 1e-3 * (1 + 2 * hi)) return (first(i[0], i[1]) - first(i[1], i[2])) / (2 * (lo - hi));
+  const double mean = (lo + mid + hi) / 3;
   const double m = 1 + 2 * mean;
   double p2 = 0, p3 = 0;
-  for (double ei : e) {
+  for (double ei : {lo, mid, hi}) {
     const double d = 2 * (ei - mean);
     p2 += d * d;
     p3 += d * d * d;
@@ -56,10 +57,10 @@ LogarithmicStrain::LogarithmicStrain(const Eigen::Matrix2d& E, double Ezz) {
   e_[1] = m - r;
   e_[2] = Ezz;
   for (int i = 0; i < 3; ++i) {
-    c_[i] = 1 + 2 * e_[i];
-    if (!(c_[i] > 0))
+    const double c = 1 + 2 * e_[i];
+    if (!(c > 0))
       throw Error("DEFORMATION='GDEF_LOG': C = F^T F is not positive definite (an eigenvalue " +
-                  std::to_string(c_[i]) + "): the cell is turned inside out");
+                  std::to_string(c) + "): the cell is turned inside out");
   }
   const double t = 0.5 * std::atan2(b, h), cs = std::cos(t), sn = std::sin(t);
   Q_ << cs, -sn, 0,  //
@@ -81,10 +82,15 @@ Eigen::Matrix3d LogarithmicStrain::eigenbasisVariation(int b) const {
   return Q_.transpose() * dC * Q_;
 }
 
-Eigen::Matrix4d LogarithmicStrain::projector() const {
+Eigen::Matrix3d LogarithmicStrain::firstDifferences() const {
   Eigen::Matrix3d first;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) first(i, j) = firstDifference(e_[i], e_[j]);
+    for (int j = i; j < 3; ++j) first(i, j) = first(j, i) = firstDifference(e_[i], e_[j]);
+  return first;
+}
+
+Eigen::Matrix4d LogarithmicStrain::projector() const {
+  const Eigen::Matrix3d first = firstDifferences();
   Eigen::Matrix4d P;
   for (int b = 0; b < 4; ++b) {
     const Eigen::Matrix3d dT = Q_ * first.cwiseProduct(eigenbasisVariation(b)) * Q_.transpose();
@@ -99,10 +105,11 @@ Eigen::Matrix4d LogarithmicStrain::stressCurvature(const Eigen::Vector4d& tau) c
       tau(3), tau(1), 0,   //
       0, 0, tau(2);
   const Eigen::Matrix3d tt = Q_.transpose() * t * Q_;
+  const Eigen::Matrix3d first = firstDifferences();
   double second[3][3][3];
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 3; ++j) second[i][k][j] = secondDifference(e_[i], e_[k], e_[j]);
+      for (int j = 0; j < 3; ++j) second[i][k][j] = secondDifference(e_, first, i, k, j);
   Eigen::Matrix3d H[4];
   for (int b = 0; b < 4; ++b) H[b] = eigenbasisVariation(b);
   Eigen::Matrix4d M;

@@ -38,11 +38,12 @@ class LogarithmicStrain {
   Eigen::Matrix4d stressCurvature(const Eigen::Vector4d& tau) const;
 
  private:
+  // g[c_i, c_j] (symmetric).
+  Eigen::Matrix3d firstDifferences() const;
   // The variation of C for a unit variation of E's Voigt component b, in C's eigenbasis.
   Eigen::Matrix3d eigenbasisVariation(int b) const;
 
-  double c_[3];        // eigenvalues of C: in-plane (2) and zz
-  double e_[3];        // the same as eigenvalues of E: c = 1 + 2 e (the differences without rounding)
+  double e_[3];        // eigenvalues of E, in-plane (2) and zz; those of C are 1 + 2 e (with exact differences)
   Eigen::Matrix3d Q_;  // eigenvectors of C, column i for c_i
   Eigen::Matrix2d T_;
   double Tzz_;
