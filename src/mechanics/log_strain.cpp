@@ -60,7 +60,7 @@ LogarithmicStrain::LogarithmicStrain(const Eigen::Matrix2d& E, double Ezz) {
     const double c = 1 + 2 * e_[i];
     if (!(c > 0))
       throw Error("DEFORMATION='GDEF_LOG': C = F^T F is not positive definite (an eigenvalue " +
-                  std::to_string(c) + "): the cell is turned inside out");
+                  std::to_string(c) + "): a singular deformation");
   }
   const double t = 0.5 * std::atan2(b, h), cs = std::cos(t), sn = std::sin(t);
   Q_ << cs, -sn, 0,  //

@@ -23,7 +23,7 @@ namespace aster::mechanics {
 class LogarithmicStrain {
  public:
   // From E (in-plane) and E_zz. Throws aster::Error when C = I + 2 E is not
-  // positive definite (no deformation gives it).
+  // positive definite (F singular, or not a number).
   LogarithmicStrain(const Eigen::Matrix2d& E, double Ezz);
 
   // T, in-plane and zz.

@@ -139,11 +139,13 @@ TEST(LogStrain, StressCurvatureMatchesDifferences) {
   }
 }
 
-TEST(LogStrain, RefusesAnInvertedState) {
+TEST(LogStrain, RefusesASingularState) {
   Eigen::Matrix2d E;
   E << -0.5, 0, 0, 0.1;  // C11 = 0
   EXPECT_THROW(LogarithmicStrain(E, 0.0), Error);
   EXPECT_THROW(LogarithmicStrain(Eigen::Matrix2d::Zero(), -0.6), Error);
+  E << 0.1, 0, 0, std::nan("");  // a diverged Newton iterate: the step is cut, no NaN spreads
+  EXPECT_THROW(LogarithmicStrain(E, 0.0), Error);
 }
 
 }  // namespace
