@@ -505,9 +505,13 @@ void MechanicalSystem::gaussStresses(const Eigen::VectorXd& U, std::vector<int>&
 
 std::vector<std::string> MechanicalSystem::internalVariableNames() const {
   std::vector<std::string> names;
-  for (const auto& law : problem_.relations) {
-    if (!law || law->internalVariableCount() == 0) continue;
-    const std::vector<std::string> own = law->internalVariableNames();
+  for (std::size_t k = 0; k < problem_.relations.size(); ++k) {
+    const auto& law = problem_.relations[k];
+    if (!law || cells_[k].kernel->internalVariables() == 0) continue;
+    std::vector<std::string> own = law->internalVariableNames();
+    // GDEF_LOG's element adds the stress tau after the law's own variables.
+    if (problem_.kinematics[k] == mechanics::Kinematics::Logarithmic)
+      for (const char* t : {"TXX", "TYY", "TZZ", "TXY", "TXZ", "TYZ"}) own.push_back(t);
     if (names.empty()) names = own;
     else if (own != names) return {};
   }

@@ -281,11 +281,13 @@ std::vector<double> modelLayout(const CellField& f, const CellFieldConcept* conc
 }
 
 // The cells (indices in the model) whose law integrates from the second Piola-Kirchhoff
-// stress S while SIEF_ELGA holds Cauchy's: a von Mises law in GROT_GDEP.
+// stress S while SIEF_ELGA holds Cauchy's: a von Mises law in GROT_GDEP, any law in
+// GDEF_LOG (its element keeps S too).
 bool keepsPiolaKirchhoff(const analysis::MechanicalSystem& system, std::size_t k) {
   const auto& problem = system.problem();
-  return k < problem.relations.size() && system.hasHistory(static_cast<int>(k)) &&
-         problem.kinematics[k] == mechanics::Kinematics::GreenLagrange &&
+  if (!system.hasHistory(static_cast<int>(k))) return false;
+  if (problem.kinematics[k] == mechanics::Kinematics::Logarithmic) return true;
+  return k < problem.relations.size() && problem.kinematics[k] == mechanics::Kinematics::GreenLagrange &&
          dynamic_cast<const mechanics::VonMisesPlasticity*>(problem.relations[k].get());
 }
 
@@ -304,8 +306,8 @@ void cauchyToPiolaKirchhoff(const analysis::MechanicalSystem& system, const Eige
     if (keepsPiolaKirchhoff(system, k)) {
       if (model.modelisation(static_cast<int>(k)) == mechanics::PlaneHypothesis::PlaneStress)
         throw Error("ETAT_INIT: the stresses (SIEF_ELGA, Cauchy's) of cell " + mesh.cellName(c) +
-                    " would be converted to the second Piola-Kirchhoff stress its von Mises law in "
-                    "DEFORMATION='GROT_GDEP' integrates from, and in C_PLAN the out-of-plane stretch this "
+                    " would be converted to the second Piola-Kirchhoff stress its law in "
+                    "DEFORMATION='GROT_GDEP' or 'GDEF_LOG' integrates from, and in C_PLAN the out-of-plane stretch this "
                     "needs is not known from the displacements: restarting such a law in C_PLAN from "
                     "stresses is not available (D_PLAN and AXIS are)");
       X.clear();
@@ -424,7 +426,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
       reuse ? std::static_pointer_cast<ResultConcept>(reuse) : std::make_shared<ResultConcept>(model);
   result->materials = problem.materials;
   result->variableNames = system.internalVariableNames();
-  for (auto kin : problem.kinematics) result->largeStrain |= kin == mechanics::Kinematics::GreenLagrange;
+  for (auto kin : problem.kinematics) result->largeStrain |= kin != mechanics::Kinematics::SmallStrain;
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newtonSolver.unknownCount());
   setInitialUnknowns(initial, system, U);
   setInitialLawState(initial, system, U);

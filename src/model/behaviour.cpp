@@ -21,12 +21,12 @@ struct RelationRules {
 // less what aster-lite does not have.
 const RelationRules* rulesOf(const std::string& relation) {
   static const std::vector<RelationRules> rules = {
-      {"ELAS", {"PETIT", "GROT_GDEP", "GREEN_LAGRANGE"}, true},
-      {"VMIS_ISOT_LINE", {"PETIT", "GROT_GDEP"}, true},
-      {"VMIS_ISOT_TRAC", {"PETIT", "GROT_GDEP"}, true},
-      {"VMIS_CINE_LINE", {"PETIT", "GROT_GDEP"}, true},
-      {"VMIS_ECMI_LINE", {"PETIT", "GROT_GDEP"}, true},
-      {"VMIS_ECMI_TRAC", {"PETIT", "GROT_GDEP"}, true},
+      {"ELAS", {"PETIT", "GROT_GDEP", "GREEN_LAGRANGE", "GDEF_LOG"}, true},
+      {"VMIS_ISOT_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
+      {"VMIS_ISOT_TRAC", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
+      {"VMIS_CINE_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
+      {"VMIS_ECMI_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
+      {"VMIS_ECMI_TRAC", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"ELAS_HYPER", {"GROT_GDEP"}, false},
   };
   for (const auto& r : rules)

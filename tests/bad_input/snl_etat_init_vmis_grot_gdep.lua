@@ -1,5 +1,5 @@
 -- expect-exit: 2
--- expect-output: <F> <STAT_NON_LINE> .*snl_etat_init_vmis_grot_gdep\.lua:16: ETAT_INIT: the stresses \(SIEF_ELGA, Cauchy's\) of cell M1 would be converted to the second Piola-Kirchhoff stress its von Mises law in DEFORMATION='GROT_GDEP' integrates from, and in C_PLAN the out-of-plane stretch this needs is not known from the displacements: restarting such a law in C_PLAN from stresses is not available \(D_PLAN and AXIS are\)
+-- expect-output: <F> <STAT_NON_LINE> .*snl_etat_init_vmis_grot_gdep\.lua:16: ETAT_INIT: the stresses \(SIEF_ELGA, Cauchy's\) of cell M1 would be converted to the second Piola-Kirchhoff stress its law in DEFORMATION='GROT_GDEP' or 'GDEF_LOG' integrates from, and in C_PLAN the out-of-plane stretch this needs is not known from the displacements: restarting such a law in C_PLAN from stresses is not available \(D_PLAN and AXIS are\)
 -- A von Mises law in GROT_GDEP keeps S; SIEF_ELGA is Cauchy's: the restart converts it with F,
 -- whose out-of-plane stretch in C_PLAN only the law knows: refused there by name.
 DEBUT{}

@@ -1,5 +1,5 @@
 -- expect-exit: 2
--- expect-output: <F> <STAT_NON_LINE> .*snl_vmis_green_lagrange\.lua:12: RELATION='VMIS_ISOT_LINE' \(cell M1\) is not available with DEFORMATION='GREEN_LAGRANGE': it takes DEFORMATION='PETIT' or 'GROT_GDEP'
+-- expect-output: <F> <STAT_NON_LINE> .*snl_vmis_green_lagrange\.lua:12: RELATION='VMIS_ISOT_LINE' \(cell M1\) is not available with DEFORMATION='GREEN_LAGRANGE': it takes DEFORMATION='PETIT', 'GROT_GDEP' or 'GDEF_LOG'
 -- code_aster's von Mises laws do not take GREEN_LAGRANGE.
 DEBUT{}
 DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
