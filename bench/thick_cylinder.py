@@ -6,7 +6,9 @@ strain, elastic-perfectly plastic von Mises (E = 210000, NU = 0.3, SY = 240),
 under an internal pressure raised linearly to P_MAX = 0.9 of the limit pressure
 p_L = 2 SY / sqrt(3) ln(b / a) in 20 equal increments. Symmetry: DY = 0 on
 Y = 0 (group BAS), DX = 0 on X = 0 (GAUCHE); the pressure acts on the inner edge
-(group INT, SEG3 cells oriented with the outward normal of the cylinder).
+(group INT, SEG3 cells oriented with the outward normal of the cylinder). BAS
+and GAUCHE are also groups of SEG3 cells, so that a refined mesh (MACR_ADAP_MAIL)
+keeps its boundary conditions on every new node.
 
 The mesh is a structured grid of QUAD8 cells, NT around the quarter circle and
 NR across the wall, uniform in angle and radius; every node lies on its exact
@@ -77,6 +79,8 @@ def main():
     inner = [[ids[(2 * a + 2, 0)], ids[(2 * a, 0)], ids[(2 * a + 1, 0)]] for a in range(nt)]
     bottom = [ids[(0, j)] for j in range(nj + 1)]
     left = [ids[(ni, j)] for j in range(nj + 1)]
+    bottom_segs = [[ids[(0, 2 * b)], ids[(0, 2 * b + 2)], ids[(0, 2 * b + 1)]] for b in range(nr)]
+    left_segs = [[ids[(ni, 2 * b + 2)], ids[(ni, 2 * b)], ids[(ni, 2 * b + 1)]] for b in range(nr)]
 
     with open(mail, "w") as f:
         f.write("TITRE\nThick cylinder under internal pressure, quarter model, NT=%d NR=%d\nFINSF\n" % (nt, nr))
@@ -87,7 +91,7 @@ def main():
         for k, q in enumerate(quads, 1):
             f.write("M%d %s\n" % (k, " ".join("N%d" % n for n in q)))
         f.write("FINSF\nSEG3\n")
-        for k, s in enumerate(inner, len(quads) + 1):
+        for k, s in enumerate(inner + bottom_segs + left_segs, len(quads) + 1):
             f.write("M%d %s\n" % (k, " ".join("N%d" % n for n in s)))
         f.write("FINSF\n")
 
@@ -98,7 +102,10 @@ def main():
             f.write("FINSF\n")
 
         group("GROUP_MA", "CYLINDRE", list(range(1, len(quads) + 1)), "M")
-        group("GROUP_MA", "INT", list(range(len(quads) + 1, len(quads) + len(inner) + 1)), "M")
+        first = len(quads) + 1
+        group("GROUP_MA", "INT", list(range(first, first + nt)), "M")
+        group("GROUP_MA", "BAS", list(range(first + nt, first + nt + nr)), "M")
+        group("GROUP_MA", "GAUCHE", list(range(first + nt + nr, first + nt + 2 * nr)), "M")
         group("GROUP_NO", "BAS", bottom, "N")
         group("GROUP_NO", "GAUCHE", left, "N")
         group("GROUP_NO", "A", [ids[(0, 0)]], "N")    # (a, 0)
