@@ -121,6 +121,7 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
     acceptedU_ = Eigen::VectorXd::Zero(dofCount());
     acceptedStress_.assign(4 * statePoints, 0.0);
     acceptedVariables_.assign(stateVariables, 0.0);
+    naturalVariables_.assign(kMaxGaussPoints * maxVariables_, 0.0);
   }
   if (cells_.size() >= kParallelCells) {
     fem::ElementDofs chunkDofs;
@@ -262,7 +263,7 @@ void MechanicalSystem::addDeadLoads(double t, Eigen::VectorXd& fext) const {
 }
 
 void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
-                                const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K) const {
+                                const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K, bool naturalState) const {
   fint.setZero(dofCount());
   fext.setZero(dofCount());
   // Element kernels on every thread, colour after colour (the kernels are pure functions
@@ -276,7 +277,7 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
     const int n = cell.kernel->nodes();
     const int* d = elements_.dofs(cell.element);
     for (int i = 0; i < 2 * n; ++i) u[i] = U(d[i]);
-    cell.kernel->internalForce(X, u, historyOf(cell, un), variables, fe, values ? Ke : nullptr);
+    cell.kernel->internalForce(X, u, historyOf(cell, un, naturalState), variables, fe, values ? Ke : nullptr);
     for (int i = 0; i < 2 * n; ++i) f[d[i]] += fe[i];
     if (values) pattern->addMatrix(cell.element, Ke, values);
   };
@@ -428,8 +429,9 @@ linalg::ConstraintElimination MechanicalSystem::eliminate(const std::vector<char
   }
 }
 
-mechanics::ElementHistory MechanicalSystem::historyOf(const Cell& cell, double* un) const {
+mechanics::ElementHistory MechanicalSystem::historyOf(const Cell& cell, double* un, bool natural) const {
   if (cell.state < 0) return {};
+  if (natural) return {nullptr, nullptr, naturalVariables_.data()};
   const int* d = elements_.dofs(cell.element);
   for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) un[i] = acceptedU_(d[i]);
   return {un, acceptedStress_.data() + 4 * cell.state, acceptedVariables_.data() + cell.variables};

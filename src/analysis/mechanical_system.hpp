@@ -76,8 +76,11 @@ class MechanicalSystem {
   // K = dFint/dU - dFext/dU (every value of K set, zero outside these terms), with K on a
   // pattern containing elementDofs() (the first elementDofs().elementCount() elements of
   // `pattern`).
+  // naturalState: the laws integrate from the natural state (no stress, no internal
+  // variables, U = 0) instead of the accepted one: at U = 0, K is then the initial
+  // elastic matrix whatever the history (NEWTON MATRICE='ELASTIQUE').
   void evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
-                const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K) const;
+                const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K, bool naturalState = false) const;
 
   // K is exactly symmetric whatever U: every element matrix is (its kernel mirrors one
   // triangle), and the assembly adds the same element values in the same order into (i, j)
@@ -144,8 +147,9 @@ class MechanicalSystem {
     const AppliedLoad* load;
   };
   void gatherCoords(int meshCell, double* X) const;
-  // The accepted state of a cell (u_n gathered into `un`); empty without history.
-  mechanics::ElementHistory historyOf(const Cell& cell, double* un) const;
+  // The accepted state of a cell (u_n gathered into `un`); empty without history. With
+  // natural, the natural state (zero stresses and variables, u_n = 0).
+  mechanics::ElementHistory historyOf(const Cell& cell, double* un, bool natural = false) const;
   void addDeadLoads(double t, Eigen::VectorXd& fext) const;
   Eigen::VectorXd deadLoadVector(const AppliedLoad& applied, double t) const;
 
@@ -172,6 +176,7 @@ class MechanicalSystem {
   bool hasHistory_ = false;
   Eigen::VectorXd acceptedU_;
   std::vector<double> acceptedStress_, acceptedVariables_;
+  std::vector<double> naturalVariables_;  // zeros, for one cell
 };
 
 }  // namespace aster::analysis

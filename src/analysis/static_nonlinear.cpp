@@ -59,10 +59,10 @@ void StaticNonlinear::buildPattern() {
   lastElimination_.reset();
 }
 
-void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatrix) {
+void StaticNonlinear::assemble(const Eigen::VectorXd& U, double t, bool withMatrix, bool naturalState) {
   const auto start = Clock::now();
   if (withMatrix) ++stats_.tangentAssemblies;  // evaluate() sets every value of K_
-  system_.evaluate(U, t, fint_, fext_, pattern_.get(), withMatrix ? &K_ : nullptr);
+  system_.evaluate(U, t, fint_, fext_, pattern_.get(), withMatrix ? &K_ : nullptr, naturalState);
   r_.setZero(n_);
   r_.head(system_.dofCount()) = fint_ - fext_;
   if (terms_) terms_->assemble(U, r_, *pattern_, termsFirstElement_, withMatrix ? &K_ : nullptr);
@@ -212,7 +212,9 @@ void StaticNonlinear::assembleIteration(const Eigen::VectorXd& U, const Step& st
   if (it.elastic && Kelastic_.size() == 0) {
     Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
     Eigen::VectorXd keepFint = fint_, keepFext = fext_, keepR = r_;
-    assemble(zero, step.t1, true);
+    // The laws' initial elastic matrix: at U = 0 from the natural state, whatever the
+    // history (a plastic state, a restart).
+    assemble(zero, step.t1, true, true);
     Kelastic_ = K_;
     fint_ = keepFint;
     fext_ = keepFext;

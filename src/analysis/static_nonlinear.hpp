@@ -116,7 +116,7 @@ class StaticNonlinear {
   [[noreturn]] void throwSingular(const linalg::SingularMatrixError& e) const;
   void finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt);
   void buildPattern();
-  void assemble(const Eigen::VectorXd& U, double t, bool withMatrix);
+  void assemble(const Eigen::VectorXd& U, double t, bool withMatrix, bool naturalState = false);
 
   MechanicalSystem& system_;
   AdditionalTerms* terms_;

@@ -112,3 +112,67 @@ TEST(PlasticNewton, QuadraticConvergenceWithTheConsistentTangent) {
 }
 
 }  // namespace
+
+namespace {
+
+// MATRICE='ELASTIQUE' after a plastic step, by a new driver (a restart): its elastic
+// matrix is the initial one, not a tangent at U = 0 from the plastic state, so the
+// iterations are those of the uninterrupted run.
+TEST(PlasticNewton, ElasticMatrixOfARestartIsTheInitialOne) {
+  auto mesh = std::make_shared<mesh::Mesh>(test_support::squareMesh(3, mesh::CellType::QUAD8));
+  auto model = std::make_shared<model::Model>(mesh);
+  std::vector<int> all(mesh->cellCount());
+  for (int c = 0; c < mesh->cellCount(); ++c) all[c] = c;
+  model->assign(all, model::Modelisation::PlaneStrain);
+  model::MechanicalLoad load;
+  load.imposed.push_back({mesh->nodesOfCells(mesh->cellGroup("GAUCHE")), 0, model::SpaceFunction(0.0)});
+  load.imposed.push_back({mesh->nodesOfCells(mesh->cellGroup("BAS")), 1, model::SpaceFunction(0.0)});
+  load.imposed.push_back({mesh->nodesOfCells(mesh->cellGroup("HAUT")), 1,
+                          model::SpaceFunction(expr::Expression::compile("0.004 * INST * (1 + X)", {"X", "INST"}))});
+  auto makeSystem = [&] {
+    analysis::MechanicalProblem problem;
+    problem.model = model;
+    problem.loads.push_back({&load, nullptr});
+    problem.kinematics.assign(model->cells().size(), Kinematics::SmallStrain);
+    problem.relations.assign(model->cells().size(),
+                             std::make_shared<VonMisesPlasticity>(isotropicLinearParameters(kE, kNu, kEt, kSy),
+                                                                  PlaneHypothesis::PlaneStrain));
+    return std::make_unique<analysis::MechanicalSystem>(problem);
+  };
+  analysis::NewtonSettings settings;
+  settings.elasticMatrix = true;
+  settings.prediction = analysis::Prediction::Elastic;
+  settings.resiGlobRela = 1e-8;
+  settings.iterGlobMaxi = 200;
+  auto record = [](std::vector<std::vector<double>>& to) {
+    return [&to](const analysis::ConvergedInstant& c) { to.push_back(c.residuals); };
+  };
+  std::vector<std::vector<double>> whole, restarted;
+  {
+    auto system = makeSystem();
+    analysis::StaticNonlinear newton(*system, nullptr, settings);
+    Eigen::VectorXd U = Eigen::VectorXd::Zero(newton.unknownCount());
+    newton.run(U, {0.0, 1.0, 2.0}, record(whole));
+  }
+  {
+    auto system = makeSystem();
+    Eigen::VectorXd U;
+    {
+      analysis::StaticNonlinear first(*system, nullptr, settings);
+      U = Eigen::VectorXd::Zero(first.unknownCount());
+      first.run(U, {0.0, 1.0}, record(restarted));
+    }
+    analysis::StaticNonlinear second(*system, nullptr, settings);
+    second.run(U, {1.0, 2.0}, record(restarted));
+  }
+  ASSERT_EQ(whole.size(), 2u);
+  ASSERT_EQ(restarted.size(), 2u);
+  // The elastic matrix converges linearly: many iterations, along which rounding grows
+  // (1e-9 relative at the end); the wrong matrix would change the sequence itself.
+  EXPECT_GT(whole[1].size(), 3u);
+  ASSERT_EQ(whole[1].size(), restarted[1].size());
+  for (std::size_t k = 0; k < whole[1].size(); ++k)
+    EXPECT_NEAR(restarted[1][k], whole[1][k], 1e-6 * whole[1][k]) << "iteration " << k;
+}
+
+}  // namespace
