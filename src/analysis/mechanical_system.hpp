@@ -78,6 +78,9 @@ class MechanicalSystem {
   // `pattern`).
   void evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
                 const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K) const;
+  // Fint(U) alone, no load evaluated: the internal forces of a given state (STAT_NON_LINE's
+  // initial one, at an instant where a FONC_MULT may be undefined).
+  void internalForces(const Eigen::VectorXd& U, Eigen::VectorXd& fint) const;
 
   // K is exactly symmetric whatever U: every element matrix is (its kernel mirrors one
   // triangle), and the assembly adds the same element values in the same order into (i, j)
@@ -134,6 +137,9 @@ class MechanicalSystem {
   // The accepted state of a cell (u_n gathered into `un`); empty without history.
   mechanics::ElementHistory historyOf(const Cell& cell, double* un) const;
   void addDeadLoads(double t, Eigen::VectorXd& fext) const;
+  // The cells' part of evaluate(): fint and, when K is given, every value of K set.
+  void assembleCells(const Eigen::VectorXd& U, Eigen::VectorXd& fint, const fem::AssemblyPattern* pattern,
+                     linalg::SparseMatrix* K) const;
   Eigen::VectorXd deadLoadVector(const AppliedLoad& applied, double t) const;
 
   MechanicalProblem problem_;
