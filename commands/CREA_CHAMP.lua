@@ -7,8 +7,8 @@ return OPER{ nom = 'CREA_CHAMP', sd_prod = {'cham_no_sdaster', 'cham_elem'}, ree
         into = {'NOEU_DEPL_R', 'NOEU_DEPL_F', 'NOEU_NEUT_R', 'NOEU_NEUT_F', 'NOEU_GEOM_R', 'NOEU_SIEF_R',
                 'NOEU_EPSI_R', 'NOEU_VARI_R',
                 'ELGA_DEPL_R', 'ELGA_NEUT_R', 'ELGA_NEUT_F', 'ELGA_GEOM_R', 'ELGA_SIEF_R', 'ELGA_EPSI_R', 'ELGA_VARI_R',
-                'ELNO_NEUT_R', 'ELNO_SIEF_R', 'ELNO_EPSI_R', 'ELNO_VARI_R'},
-        fr = "Support (NOEU nodes, ELGA Gauss points, ELNO cell nodes: from a result by EXTR), quantity and scalar type (R real, F function)." },
+                'ELNO_NEUT_R', 'ELNO_SIEF_R', 'ELNO_EPSI_R', 'ELNO_VARI_R', 'CART_SIEF_R'},
+        fr = "Support (NOEU nodes, ELGA Gauss points, ELNO cell nodes: from a result by EXTR; CART, one value per cell: AFFE on a MODELE, made a field at its Gauss points), quantity and scalar type (R real, F function)." },
   SIMP{ 'OPERATION', statut = 'o', typ = 'TXM', into = {'AFFE', 'EXTR', 'EVAL', 'ASSE', 'DISC'},
         fr = "How the field is made." },
 

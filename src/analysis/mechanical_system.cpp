@@ -88,6 +88,9 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
       const model::ElasticMaterial* mat = problem_.materials ? problem_.materials->at(c) : nullptr;
       if (!mat)
         throw Error("cell " + mesh.cellName(c) + " of the model has no material (AFFE_MATERIAU covers it?)");
+      if (!mat->hasElas)
+        throw Error("RELATION='ELAS' needs ELAS in DEFI_MATERIAU of material " + problem_.materials->materialName(c) +
+                    " (cell " + mesh.cellName(c) + ")");
       auto& slot = elastic[{mat, static_cast<int>(m.modelisation(k))}];
       if (!slot) slot = std::make_shared<mechanics::IsotropicElasticity>(mat->E, mat->NU, m.modelisation(k));
       law = slot;
@@ -462,6 +465,36 @@ void MechanicalSystem::acceptState(const Eigen::VectorXd& U) {
   acceptedVariables_.swap(variables);
 }
 
+void MechanicalSystem::setAcceptedState(const Eigen::VectorXd& U, const std::vector<double>* stresses,
+                                        const std::vector<double>* variables) {
+  if (!hasHistory_) return;
+  acceptedU_ = U.head(dofCount());
+  std::fill(acceptedStress_.begin(), acceptedStress_.end(), 0.0);
+  std::fill(acceptedVariables_.begin(), acceptedVariables_.end(), 0.0);
+  std::size_t stressCount = 0, variableCount = 0;
+  for (const Cell& cell : cells_) {
+    stressCount += 4 * cell.kernel->gaussPoints();
+    variableCount += static_cast<std::size_t>(cell.kernel->gaussPoints()) * maxVariables_;
+  }
+  if ((stresses && stresses->size() != stressCount) || (variables && variables->size() != variableCount))
+    throw Error("internal error: the initial stresses or internal variables do not match the model's Gauss points");
+  std::size_t stressAt = 0, variableAt = 0;
+  for (const Cell& cell : cells_) {
+    const int points = cell.kernel->gaussPoints(), count = cell.kernel->internalVariables();
+    if (cell.state >= 0) {
+      if (stresses)
+        std::copy(stresses->begin() + stressAt, stresses->begin() + stressAt + 4 * points,
+                  acceptedStress_.begin() + 4 * cell.state);
+      if (variables)
+        for (int q = 0; q < points; ++q)
+          for (int v = 0; v < count; ++v)
+            acceptedVariables_[cell.variables + q * count + v] = (*variables)[variableAt + q * maxVariables_ + v];
+    }
+    stressAt += 4 * points;
+    variableAt += static_cast<std::size_t>(points) * maxVariables_;
+  }
+}
+
 void MechanicalSystem::gaussStresses(const Eigen::VectorXd& U, std::vector<int>& offsets,
                                      std::vector<double>& values) const {
   offsets.assign(1, 0);
@@ -477,6 +510,21 @@ void MechanicalSystem::gaussStresses(const Eigen::VectorXd& U, std::vector<int>&
     values.insert(values.end(), s.begin(), s.end());
     offsets.push_back(static_cast<int>(values.size()));
   }
+}
+
+std::vector<std::string> MechanicalSystem::internalVariableNames() const {
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < problem_.relations.size(); ++k) {
+    const auto& law = problem_.relations[k];
+    if (!law || cells_[k].kernel->internalVariables() == 0) continue;
+    std::vector<std::string> own = law->internalVariableNames();
+    // GDEF_LOG's element adds the stress tau after the law's own variables.
+    if (problem_.kinematics[k] == mechanics::Kinematics::Logarithmic)
+      for (const char* t : {"TXX", "TYY", "TZZ", "TXY", "TXZ", "TYZ"}) own.push_back(t);
+    if (names.empty()) names = own;
+    else if (own != names) return {};
+  }
+  return names;
 }
 
 void MechanicalSystem::gaussVariables(std::vector<int>& offsets, std::vector<double>& values) const {

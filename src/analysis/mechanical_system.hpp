@@ -106,6 +106,16 @@ class MechanicalSystem {
   // the laws at U (mechanical DOFs first) and keeps the result: the driver calls it
   // once per converged step. Free for laws without history (ELAS).
   void acceptState(const Eigen::VectorXd& U);
+  // Sets the accepted state (STAT_NON_LINE's ETAT_INIT): U (mechanical DOFs first) and,
+  // for the cells whose law has history, the stresses (the laws' measure: S in
+  // GROT_GDEP), laid out as gaussStresses() gives them, and the internal variables,
+  // laid out as gaussVariables() gives them; a null one stands for zero.
+  void setAcceptedState(const Eigen::VectorXd& U, const std::vector<double>* stresses,
+                        const std::vector<double>* variables);
+  // Whether a cell of the model (its index in model().cells()) has a law with history.
+  bool hasHistory(int k) const { return cells_[k].state >= 0; }
+  // The Gauss points of each cell of the model (offsets into 4-component stresses / 4).
+  int gaussPoints(int k) const { return cells_[k].kernel->gaussPoints(); }
 
   // SIEF_ELGA at U: per cell of the model, 4 components per Gauss point (SIZZ the
   // hoop stress in AXIS), Cauchy stresses (in GROT_GDEP sigma = F S F^T / J, as
@@ -114,6 +124,9 @@ class MechanicalSystem {
   // VARI_ELGA of the accepted state: internalVariableCount() values (V1, V2, ...) per
   // Gauss point of every cell of the model, zero past a cell's own law's count.
   int internalVariableCount() const { return maxVariables_; }
+  // The laws' names of V1, V2, ... (code_aster's NOM_VARI) when every law with internal
+  // variables names them alike, else empty.
+  std::vector<std::string> internalVariableNames() const;
   void gaussVariables(std::vector<int>& offsets, std::vector<double>& values) const;
   // Gauss point positions and weights*detJ in the reference configuration (times r
   // in AXIS: per radian).

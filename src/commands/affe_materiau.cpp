@@ -7,15 +7,18 @@
 namespace aster::lang {
 namespace {
 
-ConceptPtr affeMateriau(const Keywords& k, Session&, ConceptPtr) {
+ConceptPtr affeMateriau(const Keywords& k, Session& session, ConceptPtr) {
   std::shared_ptr<mesh::Mesh> mesh;
   if (k.has("MAILLAGE"))
     mesh = static_cast<MeshConcept&>(*k.conceptPtr("MAILLAGE")).mesh;
   else
     mesh = modelOf(k.conceptPtr("MODELE")).meshPtr();
   auto field = std::make_shared<model::MaterialField>(mesh->cellCount());
-  for (const auto& occ : k.factor("AFFE"))
-    field->assign(selectCells(*mesh, occ), static_cast<MaterialConcept&>(*occ.conceptPtr("MATER")).material);
+  for (const auto& occ : k.factor("AFFE")) {
+    const std::vector<int> cells = selectCells(*mesh, occ);
+    field->assign(cells, static_cast<MaterialConcept&>(*occ.conceptPtr("MATER")).material);
+    field->assignName(cells, session.nameOf(*occ.conceptPtr("MATER")));
+  }
   return std::make_shared<MaterialFieldConcept>(mesh, field);
 }
 

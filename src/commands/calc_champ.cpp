@@ -148,6 +148,7 @@ struct Context {
   std::vector<char> keep;        // per mesh cell: in `cells`
   std::vector<int> modelIndex;   // per mesh cell: its index in model->cells(), -1 when none
   bool linearResult = false;     // evol_elas
+  bool largeStrain = false;      // computed with DEFORMATION='GROT_GDEP'
   // Built on first use: the elastic system that computes SIEF_ELGA when the result lacks it.
   std::unique_ptr<analysis::MechanicalSystem> elasticSystem;
 };
@@ -157,6 +158,9 @@ const model::ElasticMaterial& materialOf(const Context& ctx, int cell, const std
   if (!m)
     throw Error(why + " needs the material of cell " + ctx.model->mesh().cellName(cell) +
                 (ctx.materials ? ", which has none (AFFE_MATERIAU)" : ": give CHAM_MATER"));
+  if (!m->hasElas)
+    throw Error(why + " needs ELAS in DEFI_MATERIAU of material " + ctx.materials->materialName(cell) + " (cell " +
+                ctx.model->mesh().cellName(cell) + ")");
   return *m;
 }
 
@@ -193,6 +197,40 @@ CellField strains(const Context& ctx, const mesh::NodalField& depl, post::Strain
     out.values.resize(at + post::strainPointCount(t, zz.axisymmetric) * post::kStrainComponents);
     post::gaussStrains(t, X.data(), u.data(), measure, zz, out.values.data() + at);
     out.offsets.push_back(static_cast<int>(out.values.size()));
+  }
+  return out;
+}
+
+// EPSP_ELGA: EPSI_ELGA less the elastic strain of SIEF_ELGA (ELAS's E and NU), per
+// Gauss point of ctx.cells; in C_PLAN EPZZ = -(EPXX + EPYY), the plastic strain being
+// deviatoric (the total EPZZ is not known from DEPL).
+CellField plasticStrains(const Context& ctx, const ResultInstant& inst, const std::string& at) {
+  const CellField* stored = ResultConcept::cellField(inst, "SIEF_ELGA");
+  if (!stored) throw Error("EPSP_ELGA needs the stresses SIEF_ELGA, which the result does not hold at " + at);
+  const CellField sief = restricted(*stored, ctx.keep, "SIEF_ELGA");
+  CellField out = strains(ctx, ResultConcept::nodalField(inst, "DEPL"), post::StrainMeasure::Linearized, "EPSP_ELGA");
+  const auto& mesh = ctx.model->mesh();
+  const int sxx = componentIndex(sief.components, "SIXX", "SIEF_ELGA"),
+            syy = componentIndex(sief.components, "SIYY", "SIEF_ELGA"),
+            szz = componentIndex(sief.components, "SIZZ", "SIEF_ELGA"),
+            sxy = componentIndex(sief.components, "SIXY", "SIEF_ELGA");
+  const std::size_t snc = sief.components.size();
+  for (std::size_t k = 0; k < out.cells.size(); ++k) {
+    const int cell = out.cells[k];
+    if (pointsOf(sief, k) != pointsOf(out, k))
+      throw Error("EPSP_ELGA: SIEF_ELGA has " + std::to_string(pointsOf(sief, k)) + " points on cell " +
+                  mesh.cellName(cell) + ", the strains " + std::to_string(pointsOf(out, k)));
+    const auto& m = materialOf(ctx, cell, "EPSP_ELGA");
+    const bool planeStress = ctx.model->modelisation(ctx.modelIndex[cell]) == model::Modelisation::PlaneStress;
+    for (int q = 0; q < pointsOf(out, k); ++q) {
+      const double* s = sief.values.data() + sief.offsets[k] + q * snc;
+      double* e = out.values.data() + out.offsets[k] + q * post::kStrainComponents;
+      const double trace = s[sxx] + s[syy] + s[szz];
+      e[0] -= ((1 + m.NU) * s[sxx] - m.NU * trace) / m.E;
+      e[1] -= ((1 + m.NU) * s[syy] - m.NU * trace) / m.E;
+      e[2] = planeStress ? -(e[0] + e[1]) : e[2] - ((1 + m.NU) * s[szz] - m.NU * trace) / m.E;
+      e[3] -= (1 + m.NU) * s[sxy] / m.E;
+    }
   }
   return out;
 }
@@ -313,6 +351,29 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
     }
   }
 
+  // Plastic strains.
+  if (asked(options, {"EPSP_ELGA", "EPSP_ELNO", "EPSP_NOEU"})) {
+    if (ctx.largeStrain)
+      throw Error("EPSP_ELGA is the small-strain plastic strain (EPSI less the elastic strain of SIEF_ELGA), and "
+                  "the result was computed with DEFORMATION='GROT_GDEP': it is not available there");
+    CellField elga = plasticStrains(ctx, inst, at);
+    if (options.count("EPSP_ELNO") || options.count("EPSP_NOEU")) {
+      CellField elno = toNodes(elga, *ctx.model, "EPSP_ELNO");
+      if (options.count("EPSP_NOEU")) {
+        std::vector<int> support;
+        mesh::NodalField nodal = toNodal(elno, mesh, "EPSP_NOEU", support);
+        storeNodal(inst, std::move(nodal), std::move(support), *ctx.model);
+        done.insert("EPSP_NOEU");
+      }
+      store(inst, std::move(elno));
+      done.insert("EPSP_ELNO");
+    }
+    if (options.count("EPSP_ELGA")) {
+      store(inst, std::move(elga));
+      done.insert("EPSP_ELGA");
+    }
+  }
+
   // Internal variables.
   if (asked(options, {"VARI_ELNO", "VARI_NOEU"})) {
     const CellField* vari = ResultConcept::cellField(inst, "VARI_ELGA");
@@ -361,6 +422,7 @@ ConceptPtr calcChamp(const Keywords& k, Session& session, ConceptPtr reuse) {
     ctx.materials = mat->field;
   }
   ctx.linearResult = source->typeName() == "evol_elas";
+  ctx.largeStrain = source->largeStrain;
   const auto& mesh = ctx.model->mesh();
   ctx.modelIndex.assign(mesh.cellCount(), -1);
   for (std::size_t i = 0; i < ctx.model->cells().size(); ++i) ctx.modelIndex[ctx.model->cells()[i]] = static_cast<int>(i);
@@ -384,6 +446,8 @@ ConceptPtr calcChamp(const Keywords& k, Session& session, ConceptPtr reuse) {
   if (!reuse) {
     result = std::make_shared<ResultConcept>(source->model, source->typeName());
     result->materials = source->materials;
+    result->variableNames = source->variableNames;
+    result->largeStrain = source->largeStrain;
   }
   std::vector<ResultInstant*> instants = selectInstants(*source, k);
   if (!reuse) {

@@ -288,6 +288,14 @@ ConceptPtr creaChamp(const Keywords& k, Session& session, ConceptPtr) {
     throw Error("TYPE_CHAM='" + typeCham + "': fields at the nodes of cells (ELNO) are made by OPERATION='EXTR' from a "
                 "result only; NOEU_* and ELGA_* fields are made by '" + op + "'");
   if (type.support == "ELNO") return extrElno(k, type, typeCham);
+  // A CART (constant per cell) is the field at the Gauss points of the model with one value per cell.
+  if (type.support == "CART") {
+    if (op != "AFFE") throw Error("TYPE_CHAM='" + typeCham + "' is made by OPERATION='AFFE' only, not '" + op + "'");
+    if (!k.has("MODELE"))
+      throw Error("TYPE_CHAM='" + typeCham + "': give MODELE (aster-lite makes a CART a field at the Gauss points "
+                  "of the model's cells)");
+    return creaChampElga(k, session, "ELGA_" + type.quantity + "_R", type.quantity, false);
+  }
   if (type.support != "NOEU" && type.support != "ELGA")
     throw Error("TYPE_CHAM='" + typeCham + "': the support " + type.support + " is not available (NOEU, ELGA, ELNO are)");
   if (op != "AFFE" && type.scalar == "F")

@@ -76,4 +76,14 @@ mesh::FieldInstant fieldInstantOf(const mesh::Mesh& mesh, const ResultInstant& i
   return fi;
 }
 
+void nameInternalVariables(const std::string& field, std::vector<std::string>& components,
+                           const std::vector<std::string>& names) {
+  if (names.empty() || field.rfind("VARI_", 0) != 0) return;
+  for (auto& c : components) {
+    if (c.size() < 2 || c[0] != 'V' || c.find_first_not_of("0123456789", 1) != std::string::npos) continue;
+    const std::size_t k = std::stoul(c.substr(1));
+    if (k >= 1 && k <= names.size()) c = names[k - 1];
+  }
+}
+
 }  // namespace aster::lang

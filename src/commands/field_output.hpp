@@ -13,6 +13,12 @@ namespace aster::lang {
 // points than the model's rule for its type.
 mesh::CellValues cellValuesOf(const mesh::Mesh& mesh, const CellField& f);
 
+// VTK names the components of an array: the internal variables V1, V2, ... of a VARI_*
+// field take the laws' names (`names`: EPSPEQ, INDIPLAS, ...) there; other fields, or
+// no names, are left as they are.
+void nameInternalVariables(const std::string& field, std::vector<std::string>& components,
+                           const std::vector<std::string>& names);
+
 // The fields of one instant of a result, nodal and on cells.
 mesh::FieldInstant fieldInstantOf(const mesh::Mesh& mesh, const ResultInstant& instant);
 

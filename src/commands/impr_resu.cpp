@@ -103,7 +103,7 @@ mesh::CellValues cellComponents(const mesh::Mesh& mesh, const CellField& f, cons
   return v;
 }
 
-Item resolve(const Keywords& occ, bool textFormat) {
+Item resolve(const Keywords& occ, bool textFormat, bool vtk) {
   Item item;
   const std::vector<std::string> cmps = occ.texts("NOM_CMP");
   std::shared_ptr<mesh::Mesh> given;
@@ -159,6 +159,10 @@ Item resolve(const Keywords& occ, bool textFormat) {
       }
       if (!textFormat)
         for (const CellField* g : gauss) fi.cellFields.push_back(cellComponents(*item.mesh, *g, cmps));
+      if (vtk) {
+        for (auto& f : fi.fields) nameInternalVariables(f.name, f.components, r->variableNames);
+        for (auto& f : fi.cellFields) nameInternalVariables(f.name, f.components, r->variableNames);
+      }
       item.instants.push_back(std::move(fi));
       item.cellFields.push_back(std::move(gauss));
       item.resultInstants.push_back(ri);
@@ -403,7 +407,7 @@ ConceptPtr imprResu(const Keywords& k, Session& session, ConceptPtr) {
   std::vector<Item> items;
   for (std::size_t i = 0; i < occs.size(); ++i) {
     try {
-      items.push_back(resolve(occs[i], text));
+      items.push_back(resolve(occs[i], text, format == "VTK"));
     } catch (const Error& e) {
       const std::string what = e.what();
       if (what.rfind(occs[i].path + "/", 0) == 0) throw;  // already names the occurrence

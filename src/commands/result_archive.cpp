@@ -87,7 +87,10 @@ std::string ResultArchive::storedNote(const std::string& when) const {
 void ResultArchive::add(const ResultInstant& instant) {
   const fs::path vtu = pvd_.parent_path() / (pvd_.stem().string() + "_" + std::to_string(instant.index) + ".vtu");
   std::vector<mesh::CellValues> cellFields;
-  for (const auto& c : instant.cells) cellFields.push_back(cellValuesOf(mesh_, c));
+  for (const auto& c : instant.cells) {
+    cellFields.push_back(cellValuesOf(mesh_, c));
+    nameInternalVariables(c.name, cellFields.back().components, variableNames_);
+  }
   writeAtomically(vtu, [&](const fs::path& tmp) { mesh::writeVtu(mesh_, tmp.string(), instant.nodal, cellFields); },
                   files_);
   entries_.push_back({instant.time, vtu.filename().string()});

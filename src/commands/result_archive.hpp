@@ -9,6 +9,7 @@
 // were and no file the .pvd does not list.
 #pragma once
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "commands/result_concepts.hpp"
@@ -32,6 +33,8 @@ class ResultArchive {
   // instant is not on disk and the .pvd still lists the earlier ones.
   void add(const ResultInstant& instant);
   const std::filesystem::path& path() const { return pvd_; }
+  // The laws' names of the internal variables, given to the VARI components in the files.
+  void setVariableNames(std::vector<std::string> names) { variableNames_ = std::move(names); }
   // The instants on disk, listed by the .pvd.
   std::size_t stored() const { return entries_.size(); }
   // "; N instant(s) were stored <when>, in <pvd>": what a fatal error adds.
@@ -43,6 +46,7 @@ class ResultArchive {
   RunFiles* files_;
   std::string command_;
   std::vector<mesh::PvdEntry> entries_;
+  std::vector<std::string> variableNames_;
 };
 
 }  // namespace aster::lang

@@ -55,7 +55,7 @@ std::vector<int> ResultConcept::nodalSupportOf(const ResultInstant& i, const std
 std::string quantityOfField(const std::string& name) {
   const std::string prefix = name.substr(0, name.find('_'));
   if (prefix == "SIEF" || prefix == "SIGM" || prefix == "SIEQ") return "SIEF";
-  if (prefix == "EPSI" || prefix == "EPSG") return "EPSI";
+  if (prefix == "EPSI" || prefix == "EPSG" || prefix == "EPSP") return "EPSI";
   if (prefix == "VARI") return "VARI";
   if (name == "DEPL" || name == "FORC_NODA" || name == "REAC_NODA") return "DEPL";
   return "";

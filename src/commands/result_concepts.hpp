@@ -88,6 +88,11 @@ class ResultConcept : public Concept {
   // The materials the result was computed with (CALC_CHAMP's default CHAM_MATER); may be null.
   std::shared_ptr<const model::MaterialField> materials;
   std::vector<ResultInstant> instants;
+  // The laws' names of the internal variables V1, V2, ... (NOM_VARI: EPSPEQ, ...), when
+  // the laws of the result share them; empty otherwise.
+  std::vector<std::string> variableNames;
+  // Computed in large strain (DEFORMATION='GROT_GDEP' on some cell).
+  bool largeStrain = false;
 
   // The instant closest to `time` within `precision` (relative, as code_aster's
   // CRITERE='RELATIF'); throws aster::Error listing the instants otherwise.

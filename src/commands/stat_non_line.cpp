@@ -7,8 +7,11 @@
 #include <cstdio>
 #include <optional>
 
+#include <Eigen/LU>
+
 #include "commands/archiving.hpp"
 #include "commands/contact_concept.hpp"
+#include "commands/elga_field.hpp"
 #include "core/number_format.hpp"
 #include "commands/field_concepts.hpp"
 #include "commands/function_concepts.hpp"
@@ -23,6 +26,10 @@
 #include "core/interrupt.hpp"
 #include "core/messages.hpp"
 #include "lang/operators.hpp"
+#include "mechanics/von_mises_plasticity.hpp"
+#include "model/behaviour.hpp"
+#include "post/strain_fields.hpp"
+#include "fem/mesh_cell_type.hpp"
 #include "analysis/convergence_table.hpp"
 #include "analysis/static_nonlinear.hpp"
 
@@ -86,14 +93,51 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
     throw Error("CHAM_MATER was built on another mesh than MODELE's");
   problem.materials = matField->field;
 
-  // Behaviour: PETIT everywhere unless COMPORTEMENT says otherwise.
-  std::vector<mechanics::Kinematics> byCell(mesh.cellCount(), mechanics::Kinematics::SmallStrain);
+  // Behaviour: ELAS in PETIT everywhere unless COMPORTEMENT says otherwise (the last occurrence wins).
+  struct CellBehaviour {
+    const Keywords* occurrence = nullptr;  // COMPORTEMENT's, null: ELAS, PETIT
+    mechanics::Kinematics kinematics = mechanics::Kinematics::SmallStrain;
+  };
+  std::vector<CellBehaviour> byCell(mesh.cellCount());
+  bool onlyElastic = true;
   for (const auto& occ : k.factor("COMPORTEMENT")) {
     const auto kin = mechanics::kinematicsFromName(occ.text("DEFORMATION"));
+    if (occ.integer("ITER_INTE_PAS") != 0)
+      throw Error("COMPORTEMENT: ITER_INTE_PAS=" + std::to_string(occ.integer("ITER_INTE_PAS")) +
+                  ": the local subdivision of the step is not available (only ITER_INTE_PAS=0); "
+                  "DEFI_LIST_INST's ECHEC cuts the global step instead");
+    if (occ.real("PARM_THETA") != 1.0)
+      throw Error("COMPORTEMENT: PARM_THETA=" + format::asterValue(occ.real("PARM_THETA")) +
+                  ": only the implicit integration (PARM_THETA=1) is available");
+    onlyElastic &= occ.text("RELATION") == "ELAS";
     std::vector<int> cells = occ.has("GROUP_MA") || occ.has("MAILLE") ? selectCells(mesh, occ) : model->cells();
-    for (int c : cells) byCell[c] = kin;
+    for (int c : cells) byCell[c] = {&occ, kin};
   }
-  for (int c : model->cells()) problem.kinematics.push_back(byCell[c]);
+  const auto& cells = model->cells();
+  for (int c : cells) problem.kinematics.push_back(byCell[c].kinematics);
+  // A problem of ELAS alone keeps MechanicalSystem's own elastic laws (problem.relations empty).
+  if (!onlyElastic) {
+    model::BehaviourFactory factory;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const int c = cells[i];
+      const Keywords* occ = byCell[c].occurrence;
+      model::BehaviourSite site;
+      site.material = problem.materials->at(c);
+      site.cellName = mesh.cellName(c);
+      if (!site.material)
+        throw Error("cell " + site.cellName + " of the model has no material (AFFE_MATERIAU covers it?)");
+      site.materialName = problem.materials->materialName(c);
+      site.modelisation = model->modelisation(static_cast<int>(i));
+      site.deformation = occ ? occ->text("DEFORMATION") : "PETIT";
+      site.kinematics = byCell[c].kinematics;
+      model::IntegrationSettings integration;
+      if (occ) {
+        integration.maxIterations = static_cast<int>(occ->integer("ITER_INTE_MAXI"));
+        integration.tolerance = occ->real("RESI_INTE_RELA");
+      }
+      problem.relations.push_back(factory.law(occ ? occ->text("RELATION") : "ELAS", site, integration));
+    }
+  }
 
   readExcit(k, session, model, problem, keep);
   return problem;
@@ -142,10 +186,16 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   return settings;
 }
 
-// ETAT_INIT: the state to start from, an instant of an EVOL_NOLI or a DEPL field (or neither).
+// ETAT_INIT: the state to start from, an instant of an EVOL_NOLI or fields (DEPL,
+// SIGM, VARI), or nothing.
 struct InitialState {
   const ResultInstant* instant = nullptr;  // EVOL_NOLI's (it gives the initial instant too)
   const NodalFieldConcept* field = nullptr;  // DEPL's
+  const CellField* stresses = nullptr;       // SIGM's or the instant's SIEF_ELGA
+  const CellField* variables = nullptr;      // VARI's or the instant's VARI_ELGA
+  const CellFieldConcept* stressConcept = nullptr;    // SIGM's (its components may be absent on some cells)
+  const CellFieldConcept* variableConcept = nullptr;  // VARI's
+  bool given() const { return instant || field || stresses || variables; }
 };
 
 InitialState readInitialState(const Keywords& k, Session& session, const model::Model& model, const ConceptPtr& reuse) {
@@ -161,12 +211,26 @@ InitialState readInitialState(const Keywords& k, Session& session, const model::
       } catch (const Error& e) {
         throw Error("ETAT_INIT: " + std::string(e.what()));
       }
-    } else {
+      state.stresses = ResultConcept::cellField(*state.instant, "SIEF_ELGA");
+      state.variables = ResultConcept::cellField(*state.instant, "VARI_ELGA");
+    }
+    if (init.has("DEPL")) {
       state.field = dynamic_cast<const NodalFieldConcept*>(init.conceptPtr("DEPL").get());
       if (!state.field || isFunctionField(*state.field))
         throw Error("ETAT_INIT/DEPL: " + session.nameOf(*init.conceptPtr("DEPL")) + " is not a field of real nodal values");
       if (state.field->mesh != model.meshPtr())
         throw Error("ETAT_INIT/DEPL: the field is defined on another mesh than MODELE's");
+    }
+    for (const char* key : {"SIGM", "VARI"}) {
+      if (!init.has(key)) continue;
+      const auto* f = dynamic_cast<const CellFieldConcept*>(init.conceptPtr(key).get());
+      const std::string name = session.nameOf(*init.conceptPtr(key));
+      if (!f || f->field.location != CellLocation::GaussPoints)
+        throw Error(std::string("ETAT_INIT/") + key + ": " + name + " is not a field at Gauss points (ELGA)");
+      if (f->mesh != model.meshPtr())
+        throw Error(std::string("ETAT_INIT/") + key + ": " + name + " is defined on another mesh than MODELE's");
+      (std::string(key) == "SIGM" ? state.stressConcept : state.variableConcept) = f;
+      (std::string(key) == "SIGM" ? state.stresses : state.variables) = &f->field;
     }
   } else if (reuse) {
     throw Error("reuse=: STAT_NON_LINE continues a result from a state; give ETAT_INIT = {EVOL_NOLI = " +
@@ -184,6 +248,124 @@ void setInitialUnknowns(const InitialState& state, const analysis::MechanicalSys
   for (int n = 0; n < system.model().mesh().nodeCount(); ++n)
     for (int c = 0; c < 2; ++c)
       if (system.dof(n, c) >= 0) U(system.dof(n, c)) = depl.values[n * nc + (c == 0 ? cx : cy)];
+}
+
+// A field at Gauss points laid out as MechanicalSystem keeps its state: `names` per
+// Gauss point of each cell of the model, zero where the field lacks the cell or the component.
+std::vector<double> modelLayout(const CellField& f, const CellFieldConcept* concept,
+                                const analysis::MechanicalSystem& system, const std::vector<std::string>& names,
+                                const std::string& what) {
+  const auto& mesh = system.model().mesh();
+  const auto& cells = system.model().cells();
+  std::vector<int> indexOf(mesh.cellCount(), -1);
+  for (std::size_t i = 0; i < f.cells.size(); ++i) indexOf[f.cells[i]] = static_cast<int>(i);
+  std::vector<int> column(names.size(), -1);
+  for (std::size_t j = 0; j < names.size(); ++j)
+    for (std::size_t c = 0; c < f.components.size(); ++c)
+      if (f.components[c] == names[j]) column[j] = static_cast<int>(c);
+  std::vector<double> out;
+  const std::size_t nc = f.components.size();
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const int points = system.gaussPoints(static_cast<int>(k));
+    const int i = indexOf[cells[k]];
+    if (i >= 0 && pointsOf(f, i) != points)
+      throw Error(what + ": the field has " + std::to_string(pointsOf(f, i)) + " points on cell " +
+                  mesh.cellName(cells[k]) + ", whose element has " + std::to_string(points) + " Gauss points");
+    for (int q = 0; q < points; ++q)
+      for (std::size_t j = 0; j < names.size(); ++j) {
+        const bool present = i >= 0 && column[j] >= 0 && (!concept || componentPresent(*concept, i, column[j]));
+        out.push_back(present ? f.values[f.offsets[i] + q * nc + column[j]] : 0.0);
+      }
+  }
+  return out;
+}
+
+// The cells (indices in the model) whose law integrates from the second Piola-Kirchhoff
+// stress S while SIEF_ELGA holds Cauchy's: a von Mises law in GROT_GDEP, any law in
+// GDEF_LOG (its element keeps S too).
+bool keepsPiolaKirchhoff(const analysis::MechanicalSystem& system, std::size_t k) {
+  const auto& problem = system.problem();
+  if (!system.hasHistory(static_cast<int>(k))) return false;
+  if (problem.kinematics[k] == mechanics::Kinematics::Logarithmic) return true;
+  return k < problem.relations.size() && problem.kinematics[k] == mechanics::Kinematics::GreenLagrange &&
+         dynamic_cast<const mechanics::VonMisesPlasticity*>(problem.relations[k].get());
+}
+
+// The Cauchy stresses of ETAT_INIT made the laws' measure where a law keeps S:
+// S = J F^-1 sigma F^-T, F = I + grad u of the initial DEPL at each Gauss point (F33 =
+// 1 in D_PLAN, 1 + u_r / r in AXIS). In C_PLAN F33 comes from the law's own
+// plane stress condition and is not known from the displacements: refused there.
+void cauchyToPiolaKirchhoff(const analysis::MechanicalSystem& system, const Eigen::VectorXd& U,
+                            std::vector<double>& stresses) {
+  const auto& model = system.model();
+  const auto& mesh = model.mesh();
+  std::size_t at = 0;
+  std::vector<double> X, u, F;
+  for (std::size_t k = 0; k < model.cells().size(); ++k) {
+    const int c = model.cells()[k], points = system.gaussPoints(static_cast<int>(k));
+    if (keepsPiolaKirchhoff(system, k)) {
+      if (model.modelisation(static_cast<int>(k)) == mechanics::PlaneHypothesis::PlaneStress)
+        throw Error("ETAT_INIT: the stresses (SIEF_ELGA, Cauchy's) of cell " + mesh.cellName(c) +
+                    " would be converted to the second Piola-Kirchhoff stress its law in "
+                    "DEFORMATION='GROT_GDEP' or 'GDEF_LOG' integrates from, and in C_PLAN the out-of-plane stretch this "
+                    "needs is not known from the displacements: restarting such a law in C_PLAN from "
+                    "stresses is not available (D_PLAN and AXIS are)");
+      X.clear();
+      u.clear();
+      for (int n : mesh.cellNodes(c)) {
+        const auto p = mesh.node(n);
+        X.push_back(p(0));
+        X.push_back(p(1));
+        for (int d = 0; d < 2; ++d) u.push_back(system.dof(n, d) >= 0 ? U(system.dof(n, d)) : 0.0);
+      }
+      F.resize(static_cast<std::size_t>(points) * post::kGradientComponents);
+      post::gaussDeformationGradients(fem::referenceCell(mesh.cellType(c), "ETAT_INIT"), X.data(), u.data(),
+                                      model.axisymmetric(), F.data());
+      for (int q = 0; q < points; ++q) {
+        const double* f = F.data() + q * post::kGradientComponents;
+        double* s = stresses.data() + at + 4 * q;
+        Eigen::Matrix2d F2;
+        F2 << f[0], f[1], f[2], f[3];
+        const double J = F2.determinant() * f[4];
+        if (!(J > 0))
+          throw Error("ETAT_INIT: the initial displacement inverts cell " + mesh.cellName(c) + " (det F = " +
+                      format::shortest(J) + " at its Gauss point " + std::to_string(q + 1) + ")");
+        Eigen::Matrix2d sigma;
+        sigma << s[0], s[3], s[3], s[1];
+        const Eigen::Matrix2d Finv = F2.inverse();
+        const Eigen::Matrix2d S = J * Finv * sigma * Finv.transpose();
+        s[0] = S(0, 0);
+        s[1] = S(1, 1);
+        s[2] = J * s[2] / (f[4] * f[4]);
+        s[3] = S(0, 1);
+      }
+    }
+    at += 4 * static_cast<std::size_t>(points);
+  }
+}
+
+// The laws' state of ETAT_INIT: U and, for the laws with history, the stresses and
+// internal variables of SIGM / VARI or of EVOL_NOLI's instant (Cauchy stresses made
+// second Piola-Kirchhoff ones where a law keeps those).
+void setInitialLawState(const InitialState& state, analysis::MechanicalSystem& system, const Eigen::VectorXd& U) {
+  if (!state.given()) return;
+  std::vector<double> stresses, variables;
+  if (state.stresses) {
+    stresses = modelLayout(*state.stresses, state.stressConcept, system, {"SIXX", "SIYY", "SIZZ", "SIXY"},
+                           "ETAT_INIT/SIGM");
+    cauchyToPiolaKirchhoff(system, U, stresses);
+  }
+  if (state.variables) {
+    std::vector<std::string> names;
+    for (int v = 1; v <= system.internalVariableCount(); ++v) names.push_back("V" + std::to_string(v));
+    for (const auto& c : state.variables->components)
+      if (std::find(names.begin(), names.end(), c) == names.end())
+        throw Error("ETAT_INIT/VARI: the field has the component " + c + ", and the laws of the model have " +
+                    std::to_string(system.internalVariableCount()) + " internal variables (V1 ... V" +
+                    std::to_string(system.internalVariableCount()) + ")");
+    variables = modelLayout(*state.variables, state.variableConcept, system, names, "ETAT_INIT/VARI");
+  }
+  system.setAcceptedState(U, state.stresses ? &stresses : nullptr, state.variables ? &variables : nullptr);
 }
 
 // The run's figures; INFO >= 2 adds the linear solver's.
@@ -243,8 +425,11 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   std::shared_ptr<ResultConcept> result =
       reuse ? std::static_pointer_cast<ResultConcept>(reuse) : std::make_shared<ResultConcept>(model);
   result->materials = problem.materials;
+  result->variableNames = system.internalVariableNames();
+  for (auto kin : problem.kinematics) result->largeStrain |= kin != mechanics::Kinematics::SmallStrain;
   Eigen::VectorXd U = Eigen::VectorXd::Zero(newtonSolver.unknownCount());
   setInitialUnknowns(initial, system, U);
+  setInitialLawState(initial, system, U);
   if (reuse) {
     // A restart from an earlier instant replaces what the result held after it.
     const double eps = 1e-6 * std::max(1.0, std::fabs(times.front()));
@@ -276,6 +461,7 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   // Every instant goes to disk as soon as it is in the result.
   const std::string stem = session.uniqueOutputStem(session.assignedName.empty() ? "STAT_NON_LINE" : session.assignedName);
   ResultArchive archive(mesh, session.outputFile(stem + ".pvd"), &session.files);
+  archive.setVariableNames(result->variableNames);
   try {
     for (const auto& inst : result->instants) archive.add(inst);
   } catch (const Error& e) {

@@ -5,7 +5,8 @@
 // new internal variables and the consistent tangent dS/dE. The element
 // (plane_element.hpp) owns the kinematics: which strain measure (PETIT's eps or
 // GROT_GDEP's Green-Lagrange E, modelling.hpp), its variation and the geometric
-// stiffness.
+// stiffness. Under GDEF_LOG the law sees the logarithmic strain T and returns its
+// dual stress, LogarithmicStrainLaw (log_strain_law.hpp) mapping both to E and S.
 //
 // Strains and stresses have four components, xx, yy, zz, xy (zz the
 // out-of-plane direction: the thickness in D_PLAN/C_PLAN, the hoop direction in
@@ -45,7 +46,7 @@ using VoigtTangent = Eigen::Matrix4d;
 enum VoigtIndex { kXX = 0, kYY = 1, kZZ = 2, kXY = 3 };
 
 struct LawInput {
-  Eigen::Matrix2d strain;           // eps (PETIT) or E (GROT_GDEP) at the end of the increment
+  Eigen::Matrix2d strain;           // eps (PETIT), E (GROT_GDEP) or T (GDEF_LOG) at the end of the increment
   double strainZZ = 0.0;            // out of plane: 0 (D_PLAN), hoop (AXIS), not given (C_PLAN)
   Eigen::Matrix2d strainIncrement;  // from the last accepted state
   double strainIncrementZZ = 0.0;
@@ -55,7 +56,7 @@ struct LawInput {
 
 template <class Tangent>
 struct LawOutput {
-  Eigen::Matrix2d stress;       // in-plane sigma (PETIT) or S (GROT_GDEP)
+  Eigen::Matrix2d stress;       // in-plane sigma (PETIT), S (GROT_GDEP) or T's dual (GDEF_LOG)
   double stressZZ = 0.0;        // the out-of-plane component (0 in C_PLAN)
   double strainZZ = 0.0;        // C_PLAN: the out-of-plane strain making s_zz = 0, when the law reports it
   double* variables = nullptr;  // internalVariableCount() values, written by the law

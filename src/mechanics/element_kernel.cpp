@@ -48,7 +48,8 @@ class PlaneKernel final : public ElementKernel {
 
 template <fem::CellType T>
 std::unique_ptr<ElementKernel> makeKernel(std::shared_ptr<const BehaviourLaw> law, Kinematics k) {
-  if (auto elastic = std::dynamic_pointer_cast<const IsotropicElasticity>(law))
+  // GDEF_LOG wraps the law (plane_element.hpp): the BehaviourLaw element only.
+  if (auto elastic = k == Kinematics::Logarithmic ? nullptr : std::dynamic_pointer_cast<const IsotropicElasticity>(law))
     return std::make_unique<PlaneKernel<T, IsotropicElasticity>>(std::move(elastic), k);
   return std::make_unique<PlaneKernel<T, BehaviourLaw>>(std::move(law), k);
 }

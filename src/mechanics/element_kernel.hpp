@@ -36,8 +36,8 @@ class ElementKernel {
 };
 
 // An IsotropicElasticity law runs the kernels it is inlined into (the AVX2 build
-// included; in AXIS the baseline 4-component path); any other law through its
-// virtual integrate(). The law's hypothesis() makes the element axisymmetric or
+// included; in AXIS the baseline 4-component path); any other law, and any law
+// under GDEF_LOG, through its virtual integrate(). The law's hypothesis() makes the element axisymmetric or
 // not. Throws aster::Error for a cell type without a plane element.
 std::unique_ptr<ElementKernel> makePlaneKernel(mesh::CellType type, std::shared_ptr<const BehaviourLaw> law,
                                                Kinematics kinematics);

@@ -23,7 +23,8 @@ const char* planeHypothesisName(PlaneHypothesis hypothesis) {
 Kinematics kinematicsFromName(const std::string& word) {
   if (word == "PETIT") return Kinematics::SmallStrain;
   if (word == "GROT_GDEP" || word == "GREEN_LAGRANGE") return Kinematics::GreenLagrange;
-  throw Error("DEFORMATION must be 'PETIT', 'GROT_GDEP' or 'GREEN_LAGRANGE', got '" + word + "'");
+  if (word == "GDEF_LOG") return Kinematics::Logarithmic;
+  throw Error("DEFORMATION must be 'PETIT', 'GROT_GDEP', 'GREEN_LAGRANGE' or 'GDEF_LOG', got '" + word + "'");
 }
 
 }  // namespace aster::mechanics

@@ -15,11 +15,14 @@ enum class PlaneHypothesis { PlaneStrain, PlaneStress, Axisymmetric };
 // PETIT: eps = sym(grad u), Cauchy stress, reference configuration.
 // GROT_GDEP (also GREEN_LAGRANGE): total Lagrangian, Green-Lagrange strain E and
 // second Piola-Kirchhoff stress S.
-enum class Kinematics { SmallStrain, GreenLagrange };
+// GDEF_LOG: the law (written for small strains) maps the logarithmic strain
+// T = ln(F^T F) / 2 to its dual stress; the element runs it total Lagrangian as
+// GROT_GDEP through LogarithmicStrainLaw (log_strain_law.hpp), which maps E to S.
+enum class Kinematics { SmallStrain, GreenLagrange, Logarithmic };
 
 // Throw aster::Error naming the word and the choices.
 PlaneHypothesis planeHypothesisFromName(const std::string& word);  // D_PLAN, C_PLAN, AXIS
 const char* planeHypothesisName(PlaneHypothesis hypothesis);
-Kinematics kinematicsFromName(const std::string& word);  // PETIT, GROT_GDEP, GREEN_LAGRANGE
+Kinematics kinematicsFromName(const std::string& word);  // PETIT, GROT_GDEP, GREEN_LAGRANGE, GDEF_LOG
 
 }  // namespace aster::mechanics

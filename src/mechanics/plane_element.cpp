@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "mechanics/log_strain_law.hpp"
 #include "mechanics/plane_element_arithmetic.hpp"
 #include "mechanics/plane_element_avx2.hpp"
 
@@ -35,10 +36,17 @@ PlaneElement<T, Law>::PlaneElement(std::shared_ptr<const Law> law, Kinematics ki
                                    const fem::QuadratureRule<2>& rule)
     : law_(std::move(law)),
       kinematics_(kinematics),
+      strainMeasure_(kinematics == Kinematics::Logarithmic ? Kinematics::GreenLagrange : kinematics),
       axisymmetric_(law_ && law_->hypothesis() == PlaneHypothesis::Axisymmetric),
       table_(rule),
       build_(KernelBuild::Baseline) {
   if (!law_) throw Error("internal error: a plane element without a behaviour law");
+  if (kinematics == Kinematics::Logarithmic) {
+    if constexpr (std::is_same_v<Law, BehaviourLaw>)
+      law_ = std::make_shared<LogarithmicStrainLaw>(std::move(law_));
+    else
+      throw Error("internal error: DEFORMATION='GDEF_LOG' runs through the BehaviourLaw element");
+  }
   // AXIS runs the baseline 4-component path.
   if (kHasAvx2Build<Law> && !axisymmetric_ && kernelBuildAvailable(KernelBuild::Avx2Fma))
     build_ = KernelBuild::Avx2Fma;
@@ -55,12 +63,12 @@ template <CellType T, class Law>
 void PlaneElement<T, Law>::internalForce(const Coords& X, const Vector& u, const ElementHistory& history,
                                          double* variables, Vector* f, Matrix* K) const {
   if (axisymmetric_)
-    return arithmetic::internalForceAxisymmetric<T>(table_, *law_, kinematics_, X, u, history, variables, f, K);
+    return arithmetic::internalForceAxisymmetric<T>(table_, *law_, strainMeasure_, X, u, history, variables, f, K);
 #ifdef ASTER_AVX2_KERNELS
   if constexpr (kHasAvx2Build<Law>)
-    if (build_ == KernelBuild::Avx2Fma) return avx2::internalForce<T>(table_, *law_, kinematics_, X, u, f, K);
+    if (build_ == KernelBuild::Avx2Fma) return avx2::internalForce<T>(table_, *law_, strainMeasure_, X, u, f, K);
 #endif
-  arithmetic::internalForce<T>(table_, *law_, kinematics_, X, u, history, variables, f, K);
+  arithmetic::internalForce<T>(table_, *law_, strainMeasure_, X, u, history, variables, f, K);
 }
 
 template <CellType T, class Law>
@@ -75,9 +83,9 @@ template <CellType T, class Law>
 void PlaneElement<T, Law>::gaussStresses(const Coords& X, const Vector& u, const ElementHistory& history, double* out,
                                          double* variables, bool cauchy) const {
   if (axisymmetric_)
-    return arithmetic::gaussStressesAxisymmetric<T>(table_, *law_, kinematics_, X, u, history, out, variables,
+    return arithmetic::gaussStressesAxisymmetric<T>(table_, *law_, strainMeasure_, X, u, history, out, variables,
                                                     cauchy);
-  arithmetic::gaussStresses<T>(table_, *law_, kinematics_, X, u, history, out, variables, cauchy);
+  arithmetic::gaussStresses<T>(table_, *law_, strainMeasure_, X, u, history, out, variables, cauchy);
 }
 
 template <CellType T, class Law>

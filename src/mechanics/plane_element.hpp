@@ -16,9 +16,14 @@
 //   S = law(E) (PK2), P = F S (PK1); with ELAS this is Saint Venant-Kirchhoff.
 //   f_ai = int P_iJ dN_a/dX_J, K = exact derivative of f:
 //   material part int B(F)^T D B(F) + geometric part int (grad N_a . S grad N_b) I.
-// Stresses at Gauss points: Cauchy for PETIT; PK2 for GROT_GDEP (the law's
-// measure), or on demand Cauchy's sigma = F S F^T / J (what code_aster stores in
-// SIEF_ELGA for GROT_GDEP); components SIXX, SIYY, SIZZ, SIXY.
+// GDEF_LOG: as GROT_GDEP, with the law wrapped in LogarithmicStrainLaw
+//   (log_strain_law.hpp), the law of E that integrates the given law on the
+//   logarithmic strain T = ln(C) / 2; it adds 6 internal variables (tau, the
+//   stress dual to T). Law = BehaviourLaw only (the inlined elasticity has no
+//   GDEF_LOG build; element_kernel.cpp routes it).
+// Stresses at Gauss points: Cauchy for PETIT; PK2 for GROT_GDEP and GDEF_LOG (the
+// law's measure), or on demand Cauchy's sigma = F S F^T / J (what code_aster stores
+// in SIEF_ELGA for both); components SIXX, SIYY, SIZZ, SIXY.
 #pragma once
 #include <memory>
 #include <type_traits>
@@ -57,7 +62,8 @@ class PlaneElement {
   using Matrix = Eigen::Matrix<double, dofs, dofs>;
   static constexpr int stressComponents = 4;        // SIXX, SIYY, SIZZ, SIXY
 
-  // Full integration (fem::fullSurfaceRule) unless a rule is given.
+  // Full integration (fem::fullSurfaceRule) unless a rule is given. GDEF_LOG:
+  // throws aster::Error unless Law is BehaviourLaw.
   PlaneElement(std::shared_ptr<const Law> law, Kinematics kinematics);
   PlaneElement(std::shared_ptr<const Law> law, Kinematics kinematics, const fem::QuadratureRule<2>& rule);
   // A copy of `law`, a Law or a class derived from it.
@@ -66,6 +72,7 @@ class PlaneElement {
       : PlaneElement(std::shared_ptr<const Law>(std::make_shared<Concrete>(law)), kinematics) {}
 
   int gaussPointCount() const { return table_.size(); }
+  // The law the element runs: under GDEF_LOG the LogarithmicStrainLaw around the given one.
   const Law& law() const { return *law_; }
   int internalVariableCount() const { return law_->internalVariableCount(); }
   Kinematics kinematics() const { return kinematics_; }
@@ -99,6 +106,7 @@ class PlaneElement {
  private:
   std::shared_ptr<const Law> law_;
   Kinematics kinematics_;
+  Kinematics strainMeasure_;  // what law_ takes: GDEF_LOG's law takes E (GreenLagrange)
   bool axisymmetric_;
   fem::ShapeTable<T> table_;
   KernelBuild build_;

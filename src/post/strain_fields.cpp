@@ -38,7 +38,37 @@ void cellStrains(const double* Xp, const double* up, StrainMeasure measure, OutO
   }
 }
 
+template <fem::CellType T>
+void cellGradients(const double* Xp, const double* up, bool axisymmetric, double* out) {
+  using C = fem::Cell<T>;
+  fem::NodeCoords<T> X;
+  fem::NodeCoords<T> u;
+  for (int a = 0; a < C::nodes; ++a)
+    for (int d = 0; d < 2; ++d) {
+      X(a, d) = Xp[2 * a + d];
+      u(a, d) = up[2 * a + d];
+    }
+  const auto& rule = fem::fullSurfaceRule(T, axisymmetric);
+  for (int q = 0; q < rule.size(); ++q) {
+    const auto dN = C::gradients(rule.points[q]);
+    const auto N = C::values(rule.points[q]);
+    const auto dNx = fem::physicalGradients<T>(dN, fem::jacobian<T>(X, dN));
+    const Eigen::Matrix2d H = u.transpose() * dNx;  // H_ij = du_i/dx_j
+    double* o = out + q * kGradientComponents;
+    o[0] = 1 + H(0, 0);
+    o[1] = H(0, 1);
+    o[2] = H(1, 0);
+    o[3] = 1 + H(1, 1);
+    o[4] = axisymmetric ? 1 + u.col(0).dot(N) / X.col(0).dot(N) : 1.0;
+  }
+}
+
 }  // namespace
+
+void gaussDeformationGradients(fem::CellType type, const double* X, const double* u, bool axisymmetric,
+                               double* out) {
+  fem::dispatchSurface(type, [&](auto tag) { cellGradients<decltype(tag)::value>(X, u, axisymmetric, out); });
+}
 
 void gaussStrains(fem::CellType type, const double* X, const double* u, StrainMeasure measure, OutOfPlaneStrain zz,
                   double* out) {

@@ -27,6 +27,12 @@ struct OutOfPlaneStrain {
 void gaussStrains(fem::CellType type, const double* X, const double* u, StrainMeasure measure,
                   OutOfPlaneStrain zz, double* out);
 
+// The deformation gradient F = I + grad u at the same points: F11, F12, F21, F22, F33 per
+// point (F33 = 1 + u_r / r in AXIS, else 1: plane strain; in plane stress the element's
+// law knows F33, not the displacements).
+inline constexpr int kGradientComponents = 5;
+void gaussDeformationGradients(fem::CellType type, const double* X, const double* u, bool axisymmetric, double* out);
+
 // The number of Gauss points gaussStrains() fills for a cell type (in AXIS when `axisymmetric`).
 int strainPointCount(fem::CellType type, bool axisymmetric);
 

@@ -92,13 +92,15 @@ void expectQuadratic(const NewtonRun& r) {
 constexpr double kE = 200e3, kNu = 0.3, kSy = 200, kEt = 20e3;
 
 TEST(PlasticNewton, QuadraticConvergenceWithTheConsistentTangent) {
-  for (auto kinematics : {Kinematics::SmallStrain, Kinematics::GreenLagrange})
+  for (auto kinematics : {Kinematics::SmallStrain, Kinematics::GreenLagrange, Kinematics::Logarithmic})
     for (auto hypothesis : {PlaneHypothesis::PlaneStrain, PlaneHypothesis::PlaneStress})
       for (const auto& parameters : {isotropicLinearParameters(kE, kNu, kEt, kSy),
                                      kinematicLinearParameters(kE, kNu, kEt, kSy),
                                      mixedLinearParameters(kE, kNu, kEt, kSy, 5e3)}) {
         SCOPED_TRACE(std::string(planeHypothesisName(hypothesis)) +
-                     (kinematics == Kinematics::SmallStrain ? " PETIT" : " GROT_GDEP"));
+                     (kinematics == Kinematics::SmallStrain     ? " PETIT"
+                      : kinematics == Kinematics::GreenLagrange ? " GROT_GDEP"
+                                                                : " GDEF_LOG"));
         const NewtonRun r = solve(parameters, hypothesis, kinematics);
         ASSERT_EQ(r.residuals.size(), 3u);
         EXPECT_GT(r.maxPlasticStrain, 1e-3);  // well into the plastic range

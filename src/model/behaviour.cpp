@@ -1,0 +1,118 @@
+#include "model/behaviour.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "core/error.hpp"
+#include "mechanics/hyperelasticity.hpp"
+#include "mechanics/isotropic_elasticity.hpp"
+#include "mechanics/von_mises_plasticity.hpp"
+
+namespace aster::model {
+namespace {
+
+struct RelationRules {
+  const char* name;
+  std::vector<const char*> deformations;  // the DEFORMATION words it allows here
+  bool axisymmetric;                      // AXIS allowed
+};
+
+// The relations and what code_aster allows each of them (its Behaviours catalogue),
+// less what aster-lite does not have.
+const RelationRules* rulesOf(const std::string& relation) {
+  static const std::vector<RelationRules> rules = {
+      {"ELAS", {"PETIT", "GROT_GDEP", "GREEN_LAGRANGE", "GDEF_LOG"}, true},
+      {"VMIS_ISOT_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
+      {"VMIS_ISOT_TRAC", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
+      {"VMIS_CINE_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
+      {"VMIS_ECMI_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
+      {"VMIS_ECMI_TRAC", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
+      {"ELAS_HYPER", {"GROT_GDEP"}, false},
+  };
+  for (const auto& r : rules)
+    if (relation == r.name) return &r;
+  throw Error("COMPORTEMENT: unknown RELATION='" + relation + "'");
+}
+
+std::string words(const std::vector<const char*>& list) {
+  std::string out;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    out += std::string(i == 0 ? "" : i + 1 == list.size() ? " or " : ", ") + "'" + list[i] + "'";
+  return out;
+}
+
+std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation, const BehaviourSite& site,
+                                                     const IntegrationSettings& settings) {
+  const ElasticMaterial& m = *site.material;
+  auto needs = [&](bool present, const char* keyword) {
+    if (!present)
+      throw Error("RELATION='" + relation + "' needs " + keyword + " in DEFI_MATERIAU of material " +
+                  site.materialName + " (cell " + site.cellName + ")");
+  };
+  const auto hypothesis = site.modelisation;
+  if (relation == "ELAS_HYPER") {
+    needs(m.hyper.has_value(), "ELAS_HYPER");
+    const HyperelasticData& h = *m.hyper;
+    const double bulk = h.bulkGiven ? h.bulk : mechanics::Hyperelasticity::bulkFromPoisson(h.c10, h.c01, h.poisson);
+    return std::make_shared<mechanics::Hyperelasticity>(h.c10, h.c01, h.c20, bulk, hypothesis);
+  }
+  needs(m.hasElas, "ELAS");
+  if (relation == "ELAS") return std::make_shared<mechanics::IsotropicElasticity>(m.E, m.NU, hypothesis);
+  mechanics::VonMisesParameters p;
+  if (relation == "VMIS_ISOT_LINE") {
+    needs(m.ecroLine.has_value(), "ECRO_LINE");
+    p = mechanics::isotropicLinearParameters(m.E, m.NU, m.ecroLine->slope, m.ecroLine->yield);
+  } else if (relation == "VMIS_CINE_LINE") {
+    needs(m.ecroLine.has_value(), "ECRO_LINE");
+    p = mechanics::kinematicLinearParameters(m.E, m.NU, m.ecroLine->slope, m.ecroLine->yield);
+  } else if (relation == "VMIS_ECMI_LINE") {
+    needs(m.ecroLine.has_value(), "ECRO_LINE");
+    needs(m.prager.has_value(), "PRAGER");
+    p = mechanics::mixedLinearParameters(m.E, m.NU, m.ecroLine->slope, m.ecroLine->yield, *m.prager);
+  } else if (relation == "VMIS_ISOT_TRAC") {
+    needs(m.traction.has_value(), "TRACTION");
+    p = mechanics::isotropicTractionParameters(m.NU, *m.traction);
+  } else {  // VMIS_ECMI_TRAC
+    needs(m.traction.has_value(), "TRACTION");
+    needs(m.prager.has_value(), "PRAGER");
+    p = mechanics::mixedTractionParameters(m.NU, *m.traction, *m.prager);
+  }
+  p.maxIterations = settings.maxIterations;
+  p.tolerance = settings.tolerance;
+  return std::make_shared<mechanics::VonMisesPlasticity>(p, hypothesis);
+}
+
+}  // namespace
+
+std::shared_ptr<const mechanics::BehaviourLaw> BehaviourFactory::law(const std::string& relation,
+                                                                     const BehaviourSite& site,
+                                                                     const IntegrationSettings& settings) {
+  const RelationRules& rules = *rulesOf(relation);
+  const auto& allowed = rules.deformations;
+  if (std::find_if(allowed.begin(), allowed.end(), [&](const char* w) { return site.deformation == w; }) ==
+      allowed.end())
+    throw Error("RELATION='" + relation + "' (cell " + site.cellName + ") is not available with DEFORMATION='" +
+                site.deformation + "': it takes DEFORMATION=" + words(allowed));
+  if (!rules.axisymmetric && site.modelisation == mechanics::PlaneHypothesis::Axisymmetric)
+    throw Error("RELATION='" + relation + "' (cell " + site.cellName +
+                ") is not available in MODELISATION='AXIS' (code_aster allows it in 3D, D_PLAN and C_PLAN)");
+  // The integration settings matter to the von Mises laws only; ELAS and ELAS_HYPER share one law.
+  const bool vonMises = relation.compare(0, 5, "VMIS_") == 0;
+  const Key key{site.material, static_cast<int>(site.modelisation), relation, static_cast<int>(site.kinematics),
+                vonMises ? settings.maxIterations : 0, vonMises ? settings.tolerance : 0.0};
+  auto& slot = laws_[key];
+  if (!slot) {
+    try {
+      slot = build(relation, site, settings);
+    } catch (const Error& e) {
+      laws_.erase(key);
+      const std::string what = e.what();
+      if (what.rfind("RELATION=", 0) == 0) throw;
+      throw Error("RELATION='" + relation + "', material " + site.materialName + " (cell " + site.cellName +
+                  "): " + what);
+    }
+  }
+  return slot;
+}
+
+}  // namespace aster::model

@@ -1,0 +1,13 @@
+-- expect-exit: 2
+-- expect-output: <F> <MECA_STATIQUE> .*meca_statique_without_elas\.lua:12: RELATION='ELAS' needs ELAS in DEFI_MATERIAU of material MAT1 \(cell M1\)
+-- A material of ELAS_HYPER alone has no linear elasticity for MECA_STATIQUE.
+DEBUT{}
+DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
+MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
+MO = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
+MAT1 = DEFI_MATERIAU{ELAS_HYPER = {C10 = 1.0, K = 100.0}}
+CM = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MAT1}}
+CH = AFFE_CHAR_MECA{MODELE = MO, DDL_IMPO = {GROUP_MA = 'BAS', DX = 0.0, DY = 0.0}}
+L1 = DEFI_LIST_REEL{VALE = {0.0, 1.0}}
+R = MECA_STATIQUE{MODELE = MO, CHAM_MATER = CM, EXCIT = {CHARGE = CH}}
+FIN{}

@@ -1,0 +1,14 @@
+-- expect-exit: 2
+-- expect-output: <F> <STAT_NON_LINE> .*snl_elas_hyper_petit\.lua:12: RELATION='ELAS_HYPER' \(cell M1\) is not available with DEFORMATION='PETIT': it takes DEFORMATION='GROT_GDEP'
+-- Hyperelasticity is a large-strain law: code_aster allows GROT_GDEP only.
+DEBUT{}
+DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
+MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
+MO = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
+MAT1 = DEFI_MATERIAU{ELAS_HYPER = {C10 = 1.0, K = 100.0}}
+CM = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MAT1}}
+CH = AFFE_CHAR_MECA{MODELE = MO, DDL_IMPO = {GROUP_MA = 'BAS', DX = 0.0, DY = 0.0}}
+L1 = DEFI_LIST_REEL{VALE = {0.0, 1.0}}
+R = STAT_NON_LINE{MODELE = MO, CHAM_MATER = CM, EXCIT = {CHARGE = CH}, INCREMENT = {LIST_INST = L1},
+                  COMPORTEMENT = {RELATION = 'ELAS_HYPER'}}
+FIN{}
