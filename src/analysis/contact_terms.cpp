@@ -343,7 +343,7 @@ class ContinueContact final : public ContactBase {
     for (std::size_t z = 0; z < zones_.size(); ++z) {
       const auto& zs = zones_[z].settings;
       contact::ContinueOptions o;
-      o.rho = zs.rho * scales_[z];  // COEF_CONT is relative to Young's modulus
+      o.rho = zs.rho;  // COEF_CONT, absolute (a pressure per unit gap), as code_aster's
       o.penalty = zs.penalty;
       o.integration = zs.integration;
       o.gaussPoints = zs.gaussPoints;

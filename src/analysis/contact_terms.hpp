@@ -25,15 +25,14 @@
 // multipliers are stored in U divided by S, and their equations multiplied by S
 // (DISCRETE: S g, or lambda itself at a node out of contact, whose diagonal is
 // then S; CONTINUE: S int L_v g, ...), so that their rows and columns are of
-// the order of the stiffness's and the residual's rows of forces; and
-// CONTINUE's augmentation coefficient is COEF_CONT * S (COEF_CONT is relative
-// to Young's modulus). Then multiplying E and the loads by s multiplies the
-// multipliers by s and leaves the Newton iterates, the statuses, the relative
-// residuals and the pivots' lost digits as they were: without it, with E in Pa
-// the separated points' block -int L L / COEF_CONT (~1e-4) stood next to a
-// Schur complement ~1e-13 and the pivot test saw a singular matrix. With E = 1
-// (S = 1) the numbers are the same to the last bit. The penalty coefficients
-// (E_N, COEF_PENA_CONT) are physical pressures per unit penetration, not scaled.
+// the order of the stiffness's and the residual's rows of forces. Then
+// multiplying E, the loads and COEF_CONT by s multiplies the multipliers by s
+// and leaves the Newton iterates, the statuses, the relative residuals and the
+// pivots' lost digits as they were: without it, with E in Pa the separated
+// points' block -int L L / COEF_CONT stood next to a Schur complement ~1e-13
+// and the pivot test saw a singular matrix. With E = 1 (S = 1) the numbers are
+// the same to the last bit. The coefficients (COEF_CONT, E_N, COEF_PENA_CONT)
+// are absolute, as code_aster's: pressures per unit gap, not scaled.
 //
 // statusText(): active nodes (DISCRETE), points and nodes in contact (CONTINUE),
 // and a contact residual in length units that vanishes at convergence:
@@ -60,7 +59,7 @@ struct ZoneSettings {
   // penetration: a node carries E_N * g times its share of the slave length);
   // CONTINUE, COEF_PENA_CONT (lambda = COEF_PENA_CONT * g where g < 0).
   double penalty = 0;
-  double rho = 100.0;  // COEF_CONT (CONTINUE, ALGO_CONT='STANDARD')
+  double rho = 100.0;  // COEF_CONT (CONTINUE, ALGO_CONT='STANDARD'), a pressure per unit gap
   contact::ContactIntegration integration = contact::ContactIntegration::Gauss;  // CONTINUE: INTEGRATION
   int gaussPoints = 3;                                                            // ORDRE_INT
   // LAGS_C at every node of a slave cell, quadratic along a SEG3 (code_aster's:

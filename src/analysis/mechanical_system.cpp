@@ -262,10 +262,14 @@ void MechanicalSystem::addDeadLoads(double t, Eigen::VectorXd& fext) const {
   }
 }
 
-void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
-                                const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K, bool naturalState) const {
+void MechanicalSystem::internalForces(const Eigen::VectorXd& U, Eigen::VectorXd& fint) const {
+  assembleCells(U, fint, nullptr, nullptr);
+}
+
+void MechanicalSystem::assembleCells(const Eigen::VectorXd& U, Eigen::VectorXd& fint,
+                                     const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K,
+                                     bool naturalState) const {
   fint.setZero(dofCount());
-  fext.setZero(dofCount());
   // Element kernels on every thread, colour after colour (the kernels are pure functions
   // of fixed-size arrays: no allocation, no Lua); loads below stay serial.
   // Small models (the studies, the tests) keep the cells' order: same sums as ever.
@@ -329,6 +333,12 @@ void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::Vecto
       }
     }
   }
+}
+
+void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
+                                const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K, bool naturalState) const {
+  assembleCells(U, fint, pattern, K, naturalState);
+  fext.setZero(dofCount());
   double X[2 * kMaxNodes];
   addDeadLoads(t, fext);
   const bool axisymmetric = problem_.model->axisymmetric();

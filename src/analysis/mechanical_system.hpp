@@ -81,6 +81,9 @@ class MechanicalSystem {
   // elastic matrix whatever the history (NEWTON MATRICE='ELASTIQUE').
   void evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
                 const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K, bool naturalState = false) const;
+  // Fint(U) alone, no load evaluated: the internal forces of a given state (STAT_NON_LINE's
+  // initial one, at an instant where a FONC_MULT may be undefined).
+  void internalForces(const Eigen::VectorXd& U, Eigen::VectorXd& fint) const;
 
   // K is exactly symmetric whatever U: every element matrix is (its kernel mirrors one
   // triangle), and the assembly adds the same element values in the same order into (i, j)
@@ -151,6 +154,9 @@ class MechanicalSystem {
   // natural, the natural state (zero stresses and variables, u_n = 0).
   mechanics::ElementHistory historyOf(const Cell& cell, double* un, bool natural = false) const;
   void addDeadLoads(double t, Eigen::VectorXd& fext) const;
+  // The cells' part of evaluate(): fint and, when K is given, every value of K set.
+  void assembleCells(const Eigen::VectorXd& U, Eigen::VectorXd& fint, const fem::AssemblyPattern* pattern,
+                     linalg::SparseMatrix* K, bool naturalState = false) const;
   Eigen::VectorXd deadLoadVector(const AppliedLoad& applied, double t) const;
 
   MechanicalProblem problem_;

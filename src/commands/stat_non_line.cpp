@@ -439,10 +439,22 @@ ConceptPtr statNonLine(const Keywords& k, Session& session, ConceptPtr reuse) {
   } else {
     // NUME_ORDRE 0: the initial state, with its internal forces, stresses and reactions
     // (the internal forces less the loads; zero unless ETAT_INIT or a load at the first instant).
+    // The state is given, not solved for: as code_aster, the analysis never needs the loads
+    // at the initial instant (a FONC_MULT may start after it, PROL_GAUCHE='EXCLU'); when they
+    // are not defined there, REAC_NODA is absent at NUME_ORDRE 0 (code_aster's CALC_CHAMP
+    // could not compute it either).
     Eigen::VectorXd fint, fext;
-    system.evaluate(U.head(system.dofCount()), times.front(), fint, fext, nullptr, nullptr);
-    const Eigen::VectorXd reactions = fint - fext;
-    result->instants.push_back(resultInstant(system, terms.get(), times.front(), U, fint, &reactions, true, false));
+    system.internalForces(U.head(system.dofCount()), fint);
+    std::optional<Eigen::VectorXd> reactions;
+    try {
+      system.evaluate(U.head(system.dofCount()), times.front(), fint, fext, nullptr, nullptr);
+      reactions = fint - fext;
+    } catch (const Error& e) {
+      Messages::info("STAT_NON_LINE: no REAC_NODA at the initial instant " + format::asterValue(times.front()) +
+                     ": the loads are not defined there (" + e.what() + ")");
+    }
+    result->instants.push_back(resultInstant(system, terms.get(), times.front(), U, fint,
+                                             reactions ? &*reactions : nullptr, true, false));
     archiving.strip(result->instants.back());
   }
 

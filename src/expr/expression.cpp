@@ -35,6 +35,7 @@ constexpr FunctionInfo kFunctions[] = {
     {"log10", OpCode::Log10, 1, 1}, {"sqrt", OpCode::Sqrt, 1, 1},
     {"abs", OpCode::Abs, 1, 1},     {"min", OpCode::Min, 2, -1},
     {"max", OpCode::Max, 2, -1},
+    {"pow", OpCode::Power, 2, 2},  // Python's pow(a, b) and math.pow: a ** b
 };
 
 const FunctionInfo* findFunction(const std::string& name) {

@@ -3,7 +3,8 @@
 //   operators  + - * / ** (Python precedence: -2**2 == -4, 2**3**2 == 512, 2**-1 == 0.5)
 //   numbers    1  1.  .5  4.0E-05  1e3
 //   functions  sin cos tan asin acos atan atan2 sinh cosh tanh exp log log10 sqrt
-//              abs min max (min, max: two or more arguments); constant pi
+//              abs min max (min, max: two or more arguments); pow(a, b) == a ** b;
+//              constant pi
 //   context    names given with the expression (FORMULE's other keywords): real
 //              constants, substituted at compile time, and functions called by name
 //              with as many arguments as they have parameters

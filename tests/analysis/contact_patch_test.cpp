@@ -423,4 +423,58 @@ TEST(ContactPatchExact, ContactInitSetsTheFirstIterationStatuses) {
   }
 }
 
+// COEF_CONT is used as given (a pressure per unit gap, as code_aster's), not scaled
+// by Young's modulus. One QUAD4 block [0, 1]^2 with E = 1E9 held 0.1 above a master
+// SEG2, LAGS_C = -5 at both slave nodes: the points are separated (-5 + 100 x 0.1 > 0),
+// so the LAGS_C equation of node v is -int L_v LAGS_C / COEF_CONT = 5 x 0.5 / 100 = 0.025,
+// assembled times the zone's scale S = E (contact_terms.hpp), and the status residual
+// (that equation over int L_v = 0.5, in length units) is |LAGS_C| / COEF_CONT = 0.05.
+// Relative to E it would be 1E9 times smaller.
+TEST(ContactCoefCont, IsAPressurePerUnitGapUsedAsGiven) {
+  constexpr double E = 1e9, rho = 100.0, lagsC = -5.0;
+  auto m = std::make_shared<mesh::Mesh>(test_support::squareMesh(1, mesh::CellType::QUAD4));
+  const int a = m->addNode(Eigen::Vector3d(1.5, -0.1, 0)), b = m->addNode(Eigen::Vector3d(-0.5, -0.1, 0));
+  m->addCellGroup("MAITRE", {m->addCell(mesh::CellType::SEG2, {a, b})});
+  auto model = std::make_shared<model::Model>(m);
+  std::vector<int> all(m->cellCount());
+  for (int i = 0; i < m->cellCount(); ++i) all[i] = i;
+  model->assign(all, model::Modelisation::PlaneStrain);
+  auto material = std::make_shared<model::ElasticMaterial>();
+  material->E = E;
+  material->NU = kNu;
+  auto materials = std::make_shared<model::MaterialField>(m->cellCount());
+  materials->assign(all, material);
+  analysis::MechanicalProblem problem;
+  problem.model = model;
+  problem.materials = materials;
+  problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::SmallStrain);
+  analysis::MechanicalSystem system(problem);
+  analysis::ContactSettings settings;
+  settings.continueFormulation = true;
+  analysis::ContactZone z;
+  z.masterCells = m->cellGroup("MAITRE");
+  z.slaveCells = m->cellGroup("BAS");
+  z.settings.rho = rho;
+  auto terms = analysis::makeContactTerms(system, {z}, settings);
+  const int first = system.dofCount();
+  terms->setFirstUnknown(first);
+  const int n = first + terms->unknownCount();
+  ASSERT_EQ(terms->unknownCount(), 2);
+  Eigen::VectorXd U = Eigen::VectorXd::Zero(n);
+  for (int k = 0; k < 2; ++k) U(first + k) = lagsC / E;  // the unknowns are LAGS_C / S
+  terms->update(U);
+  fem::ElementDofs dofs = system.elementDofs();
+  const int firstElement = dofs.elementCount();
+  terms->elementDofs(dofs);
+  for (int i = 0; i < n; ++i) dofs.add(&i, 1);
+  fem::AssemblyPattern pattern(n, dofs);
+  linalg::SparseMatrix K;
+  pattern.takeMatrix(K);
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
+  terms->assemble(U, r, pattern, firstElement, &K);
+  for (int k = 0; k < 2; ++k) EXPECT_NEAR(r(first + k), E * (-lagsC * 0.5 / rho), 1e-9 * E * 0.025);
+  EXPECT_NEAR(residualOf(terms->statusText()), -lagsC / rho, 1e-6) << terms->statusText();
+  EXPECT_EQ(terms->statusText().rfind("0 points in contact", 0), 0u) << terms->statusText();
+}
+
 }  // namespace

@@ -129,6 +129,11 @@ TEST(Translate, StringLiteralsOfEveryKind) {
 TEST(Translate, FormulePassesItsTextThrough) {
   EXPECT_EQ(line(lua("F = FORMULE(VALE='X**2 + 1.D0*Y', NOM_PARA=('X', 'Y'))\n"), 1),
             "F = FORMULE{VALE = 'X**2 + 1.D0*Y', NOM_PARA = {'X', 'Y'}}");
+  // SSNP152 A: pow imported from math, used in a FORMULE's text (kept for the formula
+  // language) and in Python (translated).
+  const std::string out = lua("from math import pow\nEXP = FORMULE(VALE='pow(10,INST-1.1)', NOM_PARA='INST',)\n");
+  EXPECT_EQ(line(out, 2), "EXP = FORMULE{VALE = 'pow(10,INST-1.1)', NOM_PARA = 'INST'}");
+  EXPECT_EQ(run("from math import pow\nprint(pow(10, 2), pow(2, -1))\n"), "100.0 0.5\n");
 }
 
 TEST(Translate, RangeEndsAreExclusive) {

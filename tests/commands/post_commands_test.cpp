@@ -192,6 +192,11 @@ TEST_TABLE{TABLE=EL, NOM_PARA='ERREUR', FILTRE={NOM_PARA='GROUP_MA', VALE_K='BAS
            VALE_CALC=math.sqrt(1/30), TOLE_MACHINE=1e-12}
 TEST_TABLE{TABLE=EL, NOM_PARA='REFERENCE', FILTRE={NOM_PARA='GROUP_MA', VALE_K='BAS'},
            VALE_CALC=math.sqrt(0.2), TOLE_MACHINE=1e-12}
+-- code_aster's ERREUR RELATIVE (row TOTAL, any option): sqrt(1/30) / sqrt(1/5) = sqrt(1/6).
+TEST_TABLE{TABLE=EL, NOM_PARA='ERREUR RELATIVE', FILTRE={NOM_PARA='GROUP_MA', VALE_K='TOTAL'},
+           VALE_CALC=math.sqrt(1/6), TOLE_MACHINE=1e-12}
+TEST_TABLE{TABLE=E1, NOM_PARA='ERREUR RELATIVE', FILTRE={NOM_PARA='GROUP_MA', VALE_K='TOTAL'},
+           VALE_CALC=math.sqrt(0.01 + 8/15) / math.sqrt((1.1^3 - 0.1^3)/3 + 0.2), TOLE_MACHINE=1e-12}
 -- LAGS_C = x^2 at every node of BAS's SEG3 (INTERPOL_LAGS_C='QUADRATIQUE'):
 -- the shape functions reproduce X^2, the error is 0.
 FQ = FORMULE{VALE='X*X', NOM_PARA={'X'}}
@@ -205,10 +210,12 @@ EQ = POST_ERREUR{OPTION='LAGR_ABSO', CHAM_GD=UQ, MODELE=MODE, GROUP_MA='BAS', LA
 TEST_TABLE{TABLE=EQ, NOM_PARA='ERREUR', FILTRE={NOM_PARA='GROUP_MA', VALE_K='BAS'},
            VALE_CALC=0.0, ORDRE_GRANDEUR=1.0, CRITERE='ABSOLU', TOLE_MACHINE=1e-12}
 print(string.format('rows=%d %s', EL:getNumberOfRows(), EL:get('GROUP_MA', 2)))
+print('relative of BAS: ' .. tostring(EL:get('ERREUR RELATIVE', 1)))
 )");
   EXPECT_EQ(r.status, 0) << r.err << r.out;
-  EXPECT_EQ(r.ok, 8);
+  EXPECT_EQ(r.ok, 10);
   EXPECT_NE(r.out.find("rows=2 TOTAL"), std::string::npos);
+  EXPECT_NE(r.out.find("relative of BAS: nil"), std::string::npos);
 }
 
 TEST(PostCommands, ReleveRecuFonctionTablesAndPrints) {

@@ -153,6 +153,34 @@ TEST(Dual2, CompiledExpressionGivesTheHessianOfTheSsnp150Displacement) {
   EXPECT_NEAR(r.h[1][1], 0.0, kTol);
 }
 
+TEST(Dual2, PowCallGivesTheDerivativesOfAPower) {
+  // pow(10, t - 1.1) = exp((t - 1.1) ln 10): f' = f ln 10, f'' = f ln^2 10.
+  auto e = aster::expr::Expression::compile("pow(10, INST-1.1)", {"INST"});
+  const double t = 0.4, f = std::pow(10.0, t - 1.1), l = std::log(10.0);
+  const Dual2<1> a[1] = {Dual2<1>::variable(t, 0)};
+  Dual2<1> r = e->evaluateT(a);
+  EXPECT_NEAR(r.v, f, kTol);
+  EXPECT_NEAR(r.g[0], f * l, kTol);
+  EXPECT_NEAR(r.h[0][0], f * l * l, kTol);
+  // pow(X, Y) with both variable at (2, 3): f_x = y x^(y-1) = 12, f_y = x^y ln x = 8 ln 2,
+  // f_xx = y (y-1) x^(y-2) = 12, f_xy = x^(y-1) (1 + y ln x) = 4 (1 + 3 ln 2), f_yy = 8 ln^2 2.
+  auto xy = aster::expr::Expression::compile("pow(X, Y)", {"X", "Y"});
+  const D b[2] = {D::variable(2.0, 0), D::variable(3.0, 1)};
+  const D q = xy->evaluateT(b);
+  const double l2 = std::log(2.0);
+  EXPECT_NEAR(q.v, 8.0, kTol);
+  EXPECT_NEAR(q.g[0], 12.0, kTol);
+  EXPECT_NEAR(q.g[1], 8.0 * l2, kTol);
+  EXPECT_NEAR(q.h[0][0], 12.0, kTol);
+  EXPECT_NEAR(q.h[0][1], 4.0 * (1.0 + 3.0 * l2), kTol);
+  EXPECT_NEAR(q.h[1][0], 4.0 * (1.0 + 3.0 * l2), kTol);
+  EXPECT_NEAR(q.h[1][1], 8.0 * l2 * l2, kTol);
+  // Against central differences of the compiled value.
+  const double h = 1e-5;
+  const double fd = ((*e)({t + h}) - (*e)({t - h})) / (2 * h);
+  EXPECT_NEAR(r.g[0], fd, 1e-8 * std::abs(fd));
+}
+
 TEST(Dual1, GradientOnly) {
   // f = exp(x) sin(y) / x at (1, 0.5): df/dx = exp(x) sin(y) (x - 1)/x^2 = 0, df/dy = e cos(0.5).
   using E = Dual1<2>;

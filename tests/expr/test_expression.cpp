@@ -72,6 +72,14 @@ TEST(Expression, ParametersAndFunctions) {
   EXPECT_EQ(eval("atan(2)"), std::atan(2.0));
   EXPECT_EQ(eval("sinh(0.5)*cosh(0.5)-tanh(0.5)"),
             std::sinh(0.5) * std::cosh(0.5) - std::tanh(0.5));
+  // pow(a, b) is a ** b, as Python's pow and math.pow (python3: pow(10, 0.1-1.1) == 0.1).
+  EXPECT_EQ(eval("pow(2, 10)"), 1024.0);
+  EXPECT_EQ(eval("pow(10, INST-1.1)", {2.1}, {"INST"}), std::pow(10.0, 2.1 - 1.1));
+  EXPECT_DOUBLE_EQ(eval("pow(10, INST-1.1)", {0.1}, {"INST"}), 0.1);
+  EXPECT_EQ(evalXY("pow(X, 0.5)", 2, 0), std::sqrt(2.0));
+  EXPECT_EQ(evalXY("pow(X, Y)", -2, 3), -8.0);
+  EXPECT_EQ(eval("-pow(2, 2)"), -4.0);
+  EXPECT_EQ(eval("pow(2, 3)**2"), 64.0);  // a call is a primary: (2**3)**2
   // Parameter names are case-sensitive, may contain digits and underscores.
   EXPECT_EQ(eval("INST*2 + x_1", {3, 1}, {"INST", "x_1"}), 7.0);
   // A parameter may be unused; a formula may have no parameter at all.

@@ -5,15 +5,19 @@
 -- pressure (derived from ACIER) are 2.1E11 times larger and the computed
 -- displacement must be the one found with E = 1: the sum over SURFACE's nodes of
 -- |U - Uex| equals E = 1's to 1E-8 (the discretization error is 1E-3 of it),
--- with the default keywords of each formulation. CONTINUE used to stop at the
--- first step ("numerically singular ... missing Dirichlet conditions?").
+-- with the default keywords of each formulation, save CONTINUE's COEF_CONT: it is
+-- absolute (a pressure per unit gap, as code_aster's), so the scaled study takes
+-- the default 100 times E to be the same problem as E = 1 with the default.
+-- CONTINUE used to stop at the first step ("numerically singular ... missing
+-- Dirichlet conditions?").
 -- References (E = 1): DISCRETE, studies/ssnp150a.lua's value; CONTINUE, this
 -- study with E = 1.
 DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = '../../studies/ssnp150a.med'}
 MAIL = LIRE_MAILLAGE{FORMAT = 'MED', UNITE = 20}
 MAIL = MODI_MAILLAGE{reuse = MAIL, MAILLAGE = MAIL, ORIE_PEAU = {{GROUP_MA_PEAU = 'MAITRE'}, {GROUP_MA_PEAU = 'BAS'}}}
 MODELE = AFFE_MODELE{MAILLAGE = MAIL, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
-ACIER = DEFI_MATERIAU{ELAS = {E = 2.1E11, NU = 0.3}}
+E = 2.1E11
+ACIER = DEFI_MATERIAU{ELAS = {E = E, NU = 0.3}}
 CHMAT = AFFE_MATERIAU{MAILLAGE = MAIL, AFFE = {TOUT = 'OUI', MATER = ACIER}}
 UX = FORMULE{VALE = '-0.2*Y**3*(X-0.5)', NOM_PARA = {'X', 'Y'}}
 UY = FORMULE{VALE = '-0.05*(X-0.5)**2*(1+Y) - 0.01*Y', NOM_PARA = {'X', 'Y'}}
@@ -41,7 +45,8 @@ local reference = {DISCRETE = 4.0365713373585E-05, CONTINUE = 4.02859408815E-05}
 for _, formulation in ipairs({'DISCRETE', 'CONTINUE'}) do
   local RESU = STAT_NON_LINE{MODELE = MODELE, CHAM_MATER = CHMAT, EXCIT = LOADS,
     CONTACT = DEFI_CONTACT{MODELE = MODELE, FORMULATION = formulation,
-                           ZONE = {GROUP_MA_MAIT = 'MAITRE', GROUP_MA_ESCL = 'BAS'}},
+                           ZONE = {GROUP_MA_MAIT = 'MAITRE', GROUP_MA_ESCL = 'BAS',
+                                   COEF_CONT = formulation == 'CONTINUE' and 100.0 * E or nil}},
     COMPORTEMENT = {RELATION = 'ELAS', DEFORMATION = 'GROT_GDEP'},
     INCREMENT = {LIST_INST = LINST}, NEWTON = {REAC_ITER = 1}, CONVERGENCE = {ITER_GLOB_MAXI = 100}}
   local UCALC = CREA_CHAMP{TYPE_CHAM = 'NOEU_DEPL_R', OPERATION = 'EXTR', RESULTAT = RESU, NOM_CHAM = 'DEPL',

@@ -1,8 +1,10 @@
 -- expect-exit: 0
 -- expect-output: alpha_U = 3\.00347.*alpha_p = 2\.80428
 -- Contact is scale-free: SSNP150 B (studies/ssnp150b.lua: NU = 0.3, Saint
--- Venant-Kirchhoff, CONTINUE contact, here with its default keywords) with
--- E = 2.1E11 (Pa) instead of 1. The manufactured displacement is the same, so
+-- Venant-Kirchhoff, CONTINUE contact, here with its default keywords save
+-- COEF_CONT) with E = 2.1E11 (Pa) instead of 1. COEF_CONT is absolute (a pressure
+-- per unit gap, as code_aster's): the scaled study takes the default 100 times E,
+-- the same problem as E = 1 with the default. The manufactured displacement is the same, so
 -- CALC_SOLU_MANU's loads and the exact pressure (derived from ACIER) are 2.1E11
 -- times larger: the L2 error of U and the error of the contact pressure over E
 -- must be those found with E = 1 (docs/verification/ssnp150.md, POST_ERREUR
@@ -38,7 +40,8 @@ for i = 3, 4 do
              {CHARGE = AFFE_CHAR_MECA_F{MODELE = MO, FORCE_INTERNE = {
                 GROUP_MA = 'SURFACE', FX = MMS.FORCE_INTERNE.FX, FY = MMS.FORCE_INTERNE.FY}}, FONC_MULT = RAMPE},
              {CHARGE = AFFE_CHAR_CINE{MODELE = MO, MECA_IMPO = {GROUP_MA = 'MAITRE', DX = 0.0, DY = 0.0}}}},
-    CONTACT = DEFI_CONTACT{MODELE = MO, FORMULATION = 'CONTINUE', ZONE = {GROUP_MA_MAIT = 'MAITRE', GROUP_MA_ESCL = 'BAS'}},
+    CONTACT = DEFI_CONTACT{MODELE = MO, FORMULATION = 'CONTINUE',
+                           ZONE = {GROUP_MA_MAIT = 'MAITRE', GROUP_MA_ESCL = 'BAS', COEF_CONT = 100.0 * E}},
     COMPORTEMENT = {RELATION = 'ELAS', DEFORMATION = 'GROT_GDEP'},
     INCREMENT = {LIST_INST = LINST}, NEWTON = {REAC_ITER = 1}, CONVERGENCE = {ITER_GLOB_MAXI = 100}}
   local U = CREA_CHAMP{TYPE_CHAM = 'NOEU_DEPL_R', OPERATION = 'EXTR', RESULTAT = RESU, NOM_CHAM = 'DEPL', INST = 1.0}
