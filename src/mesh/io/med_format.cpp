@@ -66,8 +66,17 @@ void checkHdf5Signature(const std::string& path) {
   static const char kSignature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
   char head[8] = {};
   in.read(head, sizeof head);
-  if (in.gcount() != sizeof head || std::memcmp(head, kSignature, sizeof head) != 0)
+  if (in.gcount() != sizeof head || std::memcmp(head, kSignature, sizeof head) != 0) {
+    // A repository cloned without Git LFS holds a small text pointer in the file's place.
+    static const char kLfsPointer[] = "version https://git-lfs";
+    std::string start(sizeof kLfsPointer - 1, '\0');
+    in.clear();
+    in.seekg(0);
+    in.read(start.data(), static_cast<std::streamsize>(start.size()));
+    if (start == kLfsPointer)
+      throw Error(path + ": a Git LFS pointer, not the MED file itself (fetch the file with 'git lfs pull')");
     throw Error(path + ": not a MED file (no HDF5 signature): " + kMedExpected);
+  }
 }
 
 // RAII on a MED file handle.
