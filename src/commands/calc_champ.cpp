@@ -326,14 +326,9 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
     }
   }
 
-  // Strains.
-  for (const char* prefix : {"EPSI", "EPSG"}) {
-    const std::string g = std::string(prefix) + "_ELGA", e = std::string(prefix) + "_ELNO",
-                      n = std::string(prefix) + "_NOEU";
-    if (!asked(options, {g.c_str(), e.c_str(), n.c_str()})) continue;
-    const auto measure = std::string(prefix) == "EPSI" ? post::StrainMeasure::Linearized
-                                                       : post::StrainMeasure::GreenLagrange;
-    CellField elga = strains(ctx, ResultConcept::nodalField(inst, "DEPL"), measure, g);
+  // A strain field at the Gauss points, and what was asked of it at cell nodes and nodes.
+  auto storeStrains = [&](CellField elga, const std::string& prefix) {
+    const std::string g = prefix + "_ELGA", e = prefix + "_ELNO", n = prefix + "_NOEU";
     if (options.count(e) || options.count(n)) {
       CellField elno = toNodes(elga, *ctx.model, e);
       if (options.count(n)) {
@@ -349,6 +344,16 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
       store(inst, std::move(elga));
       done.insert(g);
     }
+  };
+
+  // Strains.
+  for (const char* prefix : {"EPSI", "EPSG"}) {
+    const std::string g = std::string(prefix) + "_ELGA", e = std::string(prefix) + "_ELNO",
+                      n = std::string(prefix) + "_NOEU";
+    if (!asked(options, {g.c_str(), e.c_str(), n.c_str()})) continue;
+    const auto measure = std::string(prefix) == "EPSI" ? post::StrainMeasure::Linearized
+                                                       : post::StrainMeasure::GreenLagrange;
+    storeStrains(strains(ctx, ResultConcept::nodalField(inst, "DEPL"), measure, g), prefix);
   }
 
   // Plastic strains.
@@ -356,22 +361,7 @@ void computeInstant(Context& ctx, const std::set<std::string>& options, ResultIn
     if (ctx.largeStrain)
       throw Error("EPSP_ELGA is the small-strain plastic strain (EPSI less the elastic strain of SIEF_ELGA), and "
                   "the result was computed with DEFORMATION='GROT_GDEP': it is not available there");
-    CellField elga = plasticStrains(ctx, inst, at);
-    if (options.count("EPSP_ELNO") || options.count("EPSP_NOEU")) {
-      CellField elno = toNodes(elga, *ctx.model, "EPSP_ELNO");
-      if (options.count("EPSP_NOEU")) {
-        std::vector<int> support;
-        mesh::NodalField nodal = toNodal(elno, mesh, "EPSP_NOEU", support);
-        storeNodal(inst, std::move(nodal), std::move(support), *ctx.model);
-        done.insert("EPSP_NOEU");
-      }
-      store(inst, std::move(elno));
-      done.insert("EPSP_ELNO");
-    }
-    if (options.count("EPSP_ELGA")) {
-      store(inst, std::move(elga));
-      done.insert("EPSP_ELGA");
-    }
+    storeStrains(plasticStrains(ctx, inst, at), "EPSP");
   }
 
   // Internal variables.

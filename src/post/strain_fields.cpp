@@ -6,16 +6,22 @@
 namespace aster::post {
 namespace {
 
+// The node coordinates and displacements of a cell (node-major arrays) as matrices.
+template <fem::CellType T>
+void gatherCell(const double* Xp, const double* up, fem::NodeCoords<T>& X, fem::NodeCoords<T>& u) {
+  for (int a = 0; a < fem::Cell<T>::nodes; ++a)
+    for (int d = 0; d < 2; ++d) {
+      X(a, d) = Xp[2 * a + d];
+      u(a, d) = up[2 * a + d];
+    }
+}
+
 template <fem::CellType T>
 void cellStrains(const double* Xp, const double* up, StrainMeasure measure, OutOfPlaneStrain zz, double* out) {
   using C = fem::Cell<T>;
   fem::NodeCoords<T> X;
   fem::NodeCoords<T> u;
-  for (int a = 0; a < C::nodes; ++a)
-    for (int d = 0; d < 2; ++d) {
-      X(a, d) = Xp[2 * a + d];
-      u(a, d) = up[2 * a + d];
-    }
+  gatherCell<T>(Xp, up, X, u);
   const auto& rule = fem::fullSurfaceRule(T, zz.axisymmetric);
   for (int q = 0; q < rule.size(); ++q) {
     const auto dN = C::gradients(rule.points[q]);
@@ -43,11 +49,7 @@ void cellGradients(const double* Xp, const double* up, bool axisymmetric, double
   using C = fem::Cell<T>;
   fem::NodeCoords<T> X;
   fem::NodeCoords<T> u;
-  for (int a = 0; a < C::nodes; ++a)
-    for (int d = 0; d < 2; ++d) {
-      X(a, d) = Xp[2 * a + d];
-      u(a, d) = up[2 * a + d];
-    }
+  gatherCell<T>(Xp, up, X, u);
   const auto& rule = fem::fullSurfaceRule(T, axisymmetric);
   for (int q = 0; q < rule.size(); ++q) {
     const auto dN = C::gradients(rule.points[q]);
