@@ -36,7 +36,7 @@ enum class Prediction {
 };
 
 struct NewtonSettings {
-  bool elasticMatrix = false;  // MATRICE='ELASTIQUE': the tangent at U = 0, kept
+  bool elasticMatrix = false;  // MATRICE='ELASTIQUE': the initial elastic matrix (U = 0, natural state), kept
   Prediction prediction = Prediction::Tangent;
   int reacIter = 1;            // REAC_ITER: reassemble the tangent every n iterations (0: never)
   int reacIncr = 1;            // REAC_INCR: reassemble the prediction's tangent every n steps (0: first only)
