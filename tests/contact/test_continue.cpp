@@ -12,13 +12,14 @@
 #include "contact/continue_formulation.hpp"
 #include "core/error.hpp"
 
+#include "continue_fixtures.hpp"
+
 using namespace aster::contact;
+using namespace aster::contact::testing;
 using aster::fem::CellType;
 using Eigen::Vector2d;
 
 namespace {
-
-double parabola(double X) { return -0.05 * (X - 0.5) * (X - 0.5); }
 
 // Cell DOFs <-> (slave current coordinates, master coordinates, the nm LAGS_C).
 Eigen::VectorXd pack(const SlaveCell& s, const std::vector<Segment>& masters, int nm) {
@@ -38,12 +39,6 @@ void unpack(const Eigen::VectorXd& q, SlaveCell& s, std::vector<Segment>& master
   for (auto& m : masters)
     for (int a = 0; a < m.nodes(); ++a) m.x(a, 0) = q(k++), m.x(a, 1) = q(k++);
   for (int a = 0; a < nm; ++a) s.lagsC(a) = q(k++);
-}
-
-std::vector<PointStatus> statuses(const ContinueCellTerms& t) {
-  std::vector<PointStatus> s;
-  for (const auto& p : t.points) s.push_back(p.status);
-  return s;
 }
 
 // Returns false (state not usable) when a status flips under perturbation.
@@ -72,22 +67,6 @@ bool checkTangent(SlaveCell s, std::vector<Segment> masters, const ContinueOptio
   EXPECT_LE((t0.tangent - fd).norm(), 1e-6 * scale) << "tangent\n" << t0.tangent << "\nfd\n" << fd;
   EXPECT_LE((t0.tangent - t0.tangent.transpose()).norm(), 1e-12 * scale);
   return true;
-}
-
-// A slave cell along y ~ 0 from x0 to x1 (walked left to right: normal -Y).
-SlaveCell slaveAlong(CellType type, double x0, double x1, std::mt19937& gen, double noise) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  SlaveCell s;
-  s.type = type;
-  s.reference.row(0) << x0, 0;
-  s.reference.row(1) << x1, 0;
-  s.reference.row(2) << 0.5 * (x0 + x1), 0;
-  const int ns = type == CellType::SEG3 ? 3 : 2;
-  for (int a = 0; a < ns; ++a) {
-    const double X = s.reference(a, 0) + noise * u(gen);
-    s.current.row(a) << X, parabola(X) + noise * u(gen);
-  }
-  return s;
 }
 
 }  // namespace

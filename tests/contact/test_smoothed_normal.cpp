@@ -17,7 +17,10 @@
 #include "contact/smoothed_normal.hpp"
 #include "core/error.hpp"
 
+#include "continue_fixtures.hpp"
+
 using namespace aster::contact;
+using namespace aster::contact::testing;
 using aster::fem::CellType;
 using Eigen::Vector2d;
 
@@ -178,8 +181,6 @@ TEST(SmoothedNormal, ConvergesToTheRadiusFasterThanTheFacetNormal) {
 
 namespace {
 
-double parabola(double X) { return -0.05 * (X - 0.5) * (X - 0.5); }
-
 // Four cells on y = parabola(x), walked from x = 2 to x = -1 (normal ~ +Y),
 // the nodes moved by up to `noise`.
 Line curvedMaster(CellType type, std::mt19937& gen, double noise) {
@@ -286,12 +287,6 @@ void unpack(const Eigen::VectorXd& q, SlaveCell& s, std::vector<Segment>& master
   for (int a = 0; a < nm; ++a) s.lagsC(a) = q(k++);
 }
 
-std::vector<PointStatus> statuses(const ContinueCellTerms& t) {
-  std::vector<PointStatus> s;
-  for (const auto& p : t.points) s.push_back(p.status);
-  return s;
-}
-
 bool checkTangent(const SlaveCell& s, const std::vector<Segment>& masters, const std::vector<NormalPatch>& patches,
                   const ContinueOptions& o) {
   ContinueCellTerms t0, tp, tm;
@@ -318,21 +313,6 @@ bool checkTangent(const SlaveCell& s, const std::vector<Segment>& masters, const
   const double scale = std::max(1.0, t0.tangent.norm());
   EXPECT_LE((t0.tangent - fd).norm(), 1e-6 * scale) << "tangent\n" << t0.tangent << "\nfd\n" << fd;
   return true;
-}
-
-SlaveCell slaveAlong(CellType type, double x0, double x1, std::mt19937& gen, double noise) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  SlaveCell s;
-  s.type = type;
-  s.reference.row(0) << x0, 0;
-  s.reference.row(1) << x1, 0;
-  s.reference.row(2) << 0.5 * (x0 + x1), 0;
-  const int ns = type == CellType::SEG3 ? 3 : 2;
-  for (int a = 0; a < ns; ++a) {
-    const double X = s.reference(a, 0) + noise * u(gen);
-    s.current.row(a) << X, parabola(X) + noise * u(gen);
-  }
-  return s;
 }
 
 }  // namespace
