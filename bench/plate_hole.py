@@ -22,6 +22,8 @@ usage: plate_hole.py NT NR OUTPUT.mail OUTPUT.inp
 import math
 import sys
 
+from quad8_files import frd_value, write_inp_mesh, write_mail
+
 A, L, S = 1.0, 20.0, 1.0
 E, NU = 1.0, 0.3
 GROWTH = 20.0  # outermost over innermost radial cell size
@@ -42,24 +44,9 @@ def point(s, t):
     return ((1.0 - g) * inner[0] + g * outer[0], (1.0 - g) * inner[1] + g * outer[1])
 
 
-def frd_sxx(frd, inp):
-    """SXX at node A (the node of the set NA of the .inp) in the STRESS block of a .frd."""
-    with open(inp) as f:
-        lines = f.read().splitlines()
-    node = int(lines[lines.index("*NSET, NSET=NA") + 1])
-    in_stress = False
-    with open(frd) as f:
-        for line in f:
-            if line.startswith(" -4"):
-                in_stress = line.split()[1] == "STRESS"
-            elif in_stress and line.startswith(" -1") and int(line[3:13]) == node:
-                return float(line[13:25])
-    sys.exit("no STRESS of node %d in %s" % (node, frd))
-
-
 def main():
     if len(sys.argv) == 4 and sys.argv[1] == "--frd-sxx":
-        print("%.7g" % frd_sxx(sys.argv[2], sys.argv[3]))
+        print("%.7g" % frd_value(sys.argv[2], sys.argv[3], "STRESS"))
         return
     if len(sys.argv) != 5:
         sys.exit(__doc__)
@@ -93,50 +80,16 @@ def main():
     left = [ids[(ni, j)] for j in range(nj + 1)]
     segs = [[ids[(2 * a, nj)], ids[(2 * a + 2, nj)], ids[(2 * a + 1, nj)]] for a in range(nt)]
 
-    with open(mail, "w") as f:
-        f.write("TITRE\nPlate with a hole, quarter model, NT=%d NR=%d\nFINSF\n" % (nt, nr))
-        f.write("COOR_2D\n")
-        for k, (x, y) in enumerate(coords, 1):
-            f.write("N%d %.15g %.15g\n" % (k, x, y))
-        f.write("FINSF\nQUAD8\n")
-        for k, q in enumerate(quads, 1):
-            f.write("M%d %s\n" % (k, " ".join("N%d" % n for n in q)))
-        f.write("FINSF\nSEG3\n")
-        for k, s in enumerate(segs, len(quads) + 1):
-            f.write("M%d %s\n" % (k, " ".join("N%d" % n for n in s)))
-        f.write("FINSF\n")
-
-        def group(kind, name, items, prefix):
-            f.write("%s\n%s\n" % (kind, name))
-            for k in range(0, len(items), 8):
-                f.write(" ".join("%s%d" % (prefix, x) for x in items[k:k + 8]) + "\n")
-            f.write("FINSF\n")
-
-        group("GROUP_MA", "PLAQUE", list(range(1, len(quads) + 1)), "M")
-        group("GROUP_MA", "DROITE", list(range(len(quads) + 1, len(quads) + len(segs) + 1)), "M")
-        group("GROUP_NO", "BAS", bottom, "N")
-        group("GROUP_NO", "GAUCHE", left, "N")
-        group("GROUP_NO", "A", [ids[(ni, 0)]], "N")  # (0, a): the top of the hole
-        group("GROUP_NO", "B", [ids[(0, 0)]], "N")   # (a, 0)
-        f.write("FIN\n")
+    write_mail(mail, "Plate with a hole, quarter model, NT=%d NR=%d" % (nt, nr), coords, quads, segs,
+               [("PLAQUE", list(range(1, len(quads) + 1))),
+                ("DROITE", list(range(len(quads) + 1, len(quads) + len(segs) + 1)))],
+               [("BAS", bottom), ("GAUCHE", left),
+                ("A", [ids[(ni, 0)]]),   # (0, a): the top of the hole
+                ("B", [ids[(0, 0)]])])   # (a, 0)
 
     with open(inp, "w") as f:
-        f.write("*HEADING\nPlate with a hole, quarter model, NT=%d NR=%d, CPS8\n" % (nt, nr))
-        f.write("*NODE, NSET=NALL\n")
-        for k, (x, y) in enumerate(coords, 1):
-            f.write("%d, %.15g, %.15g, 0\n" % (k, x, y))
-        f.write("*ELEMENT, TYPE=CPS8, ELSET=EALL\n")
-        for k, q in enumerate(quads, 1):
-            f.write("%d, %s\n" % (k, ", ".join(str(n) for n in q)))
-
-        def nset(name, nodes):
-            f.write("*NSET, NSET=%s\n" % name)
-            for k in range(0, len(nodes), 16):
-                f.write(", ".join(str(n) for n in nodes[k:k + 16]) + "\n")
-
-        nset("NBAS", bottom)
-        nset("NGAUCHE", left)
-        nset("NA", [ids[(ni, 0)]])
+        write_inp_mesh(f, "Plate with a hole, quarter model, NT=%d NR=%d, CPS8" % (nt, nr), "CPS8", coords, quads,
+                       [("NBAS", bottom), ("NGAUCHE", left), ("NA", [ids[(ni, 0)]])])
         f.write("*MATERIAL, NAME=ELAS\n*ELASTIC\n%g, %g\n" % (E, NU))
         # CalculiX expands CPS8 into a layer of 3D C3D20 bricks of this thickness: a
         # thickness of the hole's radius would be a 3D plate (2 % apart at the hole);

@@ -21,6 +21,8 @@ usage: thick_cylinder.py NT NR OUTPUT.mail OUTPUT.inp
 import math
 import sys
 
+from quad8_files import frd_value, write_inp_mesh, write_mail
+
 A, B = 1.0, 2.0
 E, NU, SY = 210000.0, 0.3, 240.0
 LIMIT = 2.0 * SY / math.sqrt(3.0) * math.log(B / A)
@@ -28,26 +30,9 @@ P_MAX = 0.9 * LIMIT
 INCREMENTS = 20
 
 
-def frd_ux(frd, inp):
-    """UX of node A (the node of the set NA of the .inp) in the last DISP block of a .frd."""
-    with open(inp) as f:
-        lines = f.read().splitlines()
-    node = int(lines[lines.index("*NSET, NSET=NA") + 1])
-    in_disp, value = False, None
-    with open(frd) as f:
-        for line in f:
-            if line.startswith(" -4"):
-                in_disp = line.split()[1] == "DISP"
-            elif in_disp and line.startswith(" -1") and int(line[3:13]) == node:
-                value = float(line[13:25])
-    if value is None:
-        sys.exit("no DISP of node %d in %s" % (node, frd))
-    return value
-
-
 def main():
     if len(sys.argv) == 4 and sys.argv[1] == "--frd-ux":
-        print("%.7g" % frd_ux(sys.argv[2], sys.argv[3]))
+        print("%.7g" % frd_value(sys.argv[2], sys.argv[3], "DISP"))
         return
     if len(sys.argv) != 5:
         sys.exit(__doc__)
@@ -82,53 +67,19 @@ def main():
     bottom_segs = [[ids[(0, 2 * b)], ids[(0, 2 * b + 2)], ids[(0, 2 * b + 1)]] for b in range(nr)]
     left_segs = [[ids[(ni, 2 * b + 2)], ids[(ni, 2 * b)], ids[(ni, 2 * b + 1)]] for b in range(nr)]
 
-    with open(mail, "w") as f:
-        f.write("TITRE\nThick cylinder under internal pressure, quarter model, NT=%d NR=%d\nFINSF\n" % (nt, nr))
-        f.write("COOR_2D\n")
-        for k, (x, y) in enumerate(coords, 1):
-            f.write("N%d %.15g %.15g\n" % (k, x, y))
-        f.write("FINSF\nQUAD8\n")
-        for k, q in enumerate(quads, 1):
-            f.write("M%d %s\n" % (k, " ".join("N%d" % n for n in q)))
-        f.write("FINSF\nSEG3\n")
-        for k, s in enumerate(inner + bottom_segs + left_segs, len(quads) + 1):
-            f.write("M%d %s\n" % (k, " ".join("N%d" % n for n in s)))
-        f.write("FINSF\n")
-
-        def group(kind, name, items, prefix):
-            f.write("%s\n%s\n" % (kind, name))
-            for k in range(0, len(items), 8):
-                f.write(" ".join("%s%d" % (prefix, x) for x in items[k:k + 8]) + "\n")
-            f.write("FINSF\n")
-
-        group("GROUP_MA", "CYLINDRE", list(range(1, len(quads) + 1)), "M")
-        first = len(quads) + 1
-        group("GROUP_MA", "INT", list(range(first, first + nt)), "M")
-        group("GROUP_MA", "BAS", list(range(first + nt, first + nt + nr)), "M")
-        group("GROUP_MA", "GAUCHE", list(range(first + nt + nr, first + nt + 2 * nr)), "M")
-        group("GROUP_NO", "BAS", bottom, "N")
-        group("GROUP_NO", "GAUCHE", left, "N")
-        group("GROUP_NO", "A", [ids[(0, 0)]], "N")    # (a, 0)
-        group("GROUP_NO", "B", [ids[(0, nj)]], "N")   # (b, 0)
-        f.write("FIN\n")
+    first = len(quads) + 1
+    write_mail(mail, "Thick cylinder under internal pressure, quarter model, NT=%d NR=%d" % (nt, nr), coords, quads,
+               inner + bottom_segs + left_segs,
+               [("CYLINDRE", list(range(1, len(quads) + 1))), ("INT", list(range(first, first + nt))),
+                ("BAS", list(range(first + nt, first + nt + nr))),
+                ("GAUCHE", list(range(first + nt + nr, first + nt + 2 * nr)))],
+               [("BAS", bottom), ("GAUCHE", left),
+                ("A", [ids[(0, 0)]]),    # (a, 0)
+                ("B", [ids[(0, nj)]])])  # (b, 0)
 
     with open(inp, "w") as f:
-        f.write("*HEADING\nThick cylinder, quarter model, NT=%d NR=%d, CPE8\n" % (nt, nr))
-        f.write("*NODE, NSET=NALL\n")
-        for k, (x, y) in enumerate(coords, 1):
-            f.write("%d, %.15g, %.15g, 0\n" % (k, x, y))
-        f.write("*ELEMENT, TYPE=CPE8, ELSET=EALL\n")
-        for k, q in enumerate(quads, 1):
-            f.write("%d, %s\n" % (k, ", ".join(str(n) for n in q)))
-
-        def nset(name, nodes):
-            f.write("*NSET, NSET=%s\n" % name)
-            for k in range(0, len(nodes), 16):
-                f.write(", ".join(str(n) for n in nodes[k:k + 16]) + "\n")
-
-        nset("NBAS", bottom)
-        nset("NGAUCHE", left)
-        nset("NA", [ids[(0, 0)]])
+        write_inp_mesh(f, "Thick cylinder, quarter model, NT=%d NR=%d, CPE8" % (nt, nr), "CPE8", coords, quads,
+                       [("NBAS", bottom), ("NGAUCHE", left), ("NA", [ids[(0, 0)]])])
         f.write("*MATERIAL, NAME=STEEL\n*ELASTIC\n%g, %g\n*PLASTIC\n%g, 0.0\n" % (E, NU, SY))
         f.write("*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n%g\n" % (A / 100.0))
         f.write("*BOUNDARY\nNBAS, 2, 2, 0.0\nNGAUCHE, 1, 1, 0.0\n")
