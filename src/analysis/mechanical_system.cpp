@@ -263,10 +263,10 @@ void MechanicalSystem::addDeadLoads(double t, Eigen::VectorXd& fext) const {
 }
 
 void MechanicalSystem::internalForces(const Eigen::VectorXd& U, Eigen::VectorXd& fint) const {
-  assembleCells(U, fint, nullptr, nullptr);
+  assembleCells(U, acceptedTime_, fint, nullptr, nullptr);
 }
 
-void MechanicalSystem::assembleCells(const Eigen::VectorXd& U, Eigen::VectorXd& fint,
+void MechanicalSystem::assembleCells(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint,
                                      const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K,
                                      bool naturalState) const {
   fint.setZero(dofCount());
@@ -281,7 +281,7 @@ void MechanicalSystem::assembleCells(const Eigen::VectorXd& U, Eigen::VectorXd& 
     const int n = cell.kernel->nodes();
     const int* d = elements_.dofs(cell.element);
     for (int i = 0; i < 2 * n; ++i) u[i] = U(d[i]);
-    cell.kernel->internalForce(X, u, historyOf(cell, un, naturalState), variables, fe, values ? Ke : nullptr);
+    cell.kernel->internalForce(X, u, historyOf(cell, un, t, naturalState), variables, fe, values ? Ke : nullptr);
     for (int i = 0; i < 2 * n; ++i) f[d[i]] += fe[i];
     if (values) pattern->addMatrix(cell.element, Ke, values);
   };
@@ -337,7 +337,7 @@ void MechanicalSystem::assembleCells(const Eigen::VectorXd& U, Eigen::VectorXd& 
 
 void MechanicalSystem::evaluate(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, Eigen::VectorXd& fext,
                                 const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K, bool naturalState) const {
-  assembleCells(U, fint, pattern, K, naturalState);
+  assembleCells(U, t, fint, pattern, K, naturalState);
   fext.setZero(dofCount());
   double X[2 * kMaxNodes];
   addDeadLoads(t, fext);
@@ -439,15 +439,16 @@ linalg::ConstraintElimination MechanicalSystem::eliminate(const std::vector<char
   }
 }
 
-mechanics::ElementHistory MechanicalSystem::historyOf(const Cell& cell, double* un, bool natural) const {
+mechanics::ElementHistory MechanicalSystem::historyOf(const Cell& cell, double* un, double t, bool natural) const {
   if (cell.state < 0) return {};
   if (natural) return {nullptr, nullptr, naturalVariables_.data()};
   const int* d = elements_.dofs(cell.element);
   for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) un[i] = acceptedU_(d[i]);
-  return {un, acceptedStress_.data() + 4 * cell.state, acceptedVariables_.data() + cell.variables};
+  return {un, acceptedStress_.data() + 4 * cell.state, acceptedVariables_.data() + cell.variables, t,
+          t - acceptedTime_};
 }
 
-void MechanicalSystem::acceptState(const Eigen::VectorXd& U) {
+void MechanicalSystem::acceptState(const Eigen::VectorXd& U, double t) {
   if (!hasHistory_) return;
   std::vector<double> stress(acceptedStress_.size()), variables(acceptedVariables_.size());
   double X[2 * kMaxNodes], u[2 * kMaxNodes], un[2 * kMaxNodes];
@@ -457,13 +458,14 @@ void MechanicalSystem::acceptState(const Eigen::VectorXd& U) {
       gatherCoords(cell.meshCell, X);
       const int* d = elements_.dofs(cell.element);
       for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) u[i] = U(d[i]);
-      cell.kernel->stresses(X, u, historyOf(cell, un), stress.data() + 4 * cell.state,
+      cell.kernel->stresses(X, u, historyOf(cell, un, t), stress.data() + 4 * cell.state,
                             variables.data() + cell.variables, false);
     }
   } catch (const Error& e) {
     throw InvalidStateError(e.what());
   }
   acceptedU_ = U.head(dofCount());
+  acceptedTime_ = t;
   acceptedStress_.swap(stress);
   acceptedVariables_.swap(variables);
 }
@@ -509,7 +511,7 @@ void MechanicalSystem::gaussStresses(const Eigen::VectorXd& U, std::vector<int>&
     const int* d = elements_.dofs(cell.element);
     for (int i = 0; i < 2 * cell.kernel->nodes(); ++i) u[i] = U(d[i]);
     s.resize(4 * cell.kernel->gaussPoints());
-    cell.kernel->stresses(X, u, historyOf(cell, un), s.data(), variables.data(), true);
+    cell.kernel->stresses(X, u, historyOf(cell, un, acceptedTime_), s.data(), variables.data(), true);
     values.insert(values.end(), s.begin(), s.end());
     offsets.push_back(static_cast<int>(values.size()));
   }

@@ -83,6 +83,7 @@ class MechanicalSystem {
                 const fem::AssemblyPattern* pattern, linalg::SparseMatrix* K, bool naturalState = false) const;
   // Fint(U) alone, no load evaluated: the internal forces of a given state (STAT_NON_LINE's
   // initial one, at an instant where a FONC_MULT may be undefined).
+  // The laws integrate from the accepted state over no time.
   void internalForces(const Eigen::VectorXd& U, Eigen::VectorXd& fint) const;
 
   // K is exactly symmetric whatever U: every element matrix is (its kernel mirrors one
@@ -107,8 +108,15 @@ class MechanicalSystem {
   // The laws' state at the last accepted step (the natural state, U = 0, at first):
   // evaluate() and gaussStresses() integrate from it. acceptState(U) integrates
   // the laws at U (mechanical DOFs first) and keeps the result: the driver calls it
-  // once per converged step. Free for laws without history (ELAS).
-  void acceptState(const Eigen::VectorXd& U);
+  // once per converged step, t the step's end instant (rate-dependent laws integrate
+  // over t minus the instant of the state before). Free for laws without history (ELAS).
+  void acceptState(const Eigen::VectorXd& U, double t);
+  // The first state of a run at its first instant t0: U integrated from the accepted
+  // state (the natural one or ETAT_INIT's) over no time.
+  void acceptInitialState(const Eigen::VectorXd& U, double t0) {
+    acceptedTime_ = t0;
+    acceptState(U, t0);
+  }
   // Sets the accepted state (STAT_NON_LINE's ETAT_INIT): U (mechanical DOFs first) and,
   // for the cells whose law has history, the stresses (the laws' measure: S in
   // GROT_GDEP), laid out as gaussStresses() gives them, and the internal variables,
@@ -152,10 +160,11 @@ class MechanicalSystem {
   void gatherCoords(int meshCell, double* X) const;
   // The accepted state of a cell (u_n gathered into `un`); empty without history. With
   // natural, the natural state (zero stresses and variables, u_n = 0).
-  mechanics::ElementHistory historyOf(const Cell& cell, double* un, bool natural = false) const;
+  // The accepted state of `cell` as the laws integrate from it to instant t.
+  mechanics::ElementHistory historyOf(const Cell& cell, double* un, double t, bool natural = false) const;
   void addDeadLoads(double t, Eigen::VectorXd& fext) const;
   // The cells' part of evaluate(): fint and, when K is given, every value of K set.
-  void assembleCells(const Eigen::VectorXd& U, Eigen::VectorXd& fint, const fem::AssemblyPattern* pattern,
+  void assembleCells(const Eigen::VectorXd& U, double t, Eigen::VectorXd& fint, const fem::AssemblyPattern* pattern,
                      linalg::SparseMatrix* K, bool naturalState = false) const;
   Eigen::VectorXd deadLoadVector(const AppliedLoad& applied, double t) const;
 
@@ -181,6 +190,7 @@ class MechanicalSystem {
   int maxVariables_ = 0;
   bool hasHistory_ = false;
   Eigen::VectorXd acceptedU_;
+  double acceptedTime_ = 0.0;  // the INST of the accepted state
   std::vector<double> acceptedStress_, acceptedVariables_;
   std::vector<double> naturalVariables_;  // zeros, for one cell
 };

@@ -151,7 +151,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     if (verdict == Verdict::Converged) {
       report(it, "");
       stats_.iterations += k;
-      finishStep(U, step.Ustart, t1 - t0);
+      finishStep(U, step.Ustart, t1, t1 - t0);
       for (NewtonObserver* o : observers_) o->stepConverged(t1, k, true);
       return true;
     }
@@ -165,7 +165,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
         // CONVERGENCE/ARRET='NON': the step is kept as it is.
         Messages::alarm("STAT_NON_LINE", "instant " + scientific(t1, 6) + ": " + why +
                                              "; the step is accepted as it is (CONVERGENCE/ARRET='NON')");
-        finishStep(U, step.Ustart, t1 - t0);
+        finishStep(U, step.Ustart, t1, t1 - t0);
         for (NewtonObserver* o : observers_) o->stepConverged(t1, k, false);
         return true;
       }
@@ -454,8 +454,8 @@ void StaticNonlinear::report(const Iteration& it, const char* matrix) const {
   for (NewtonObserver* o : observers_) o->iterationDone(done);
 }
 
-void StaticNonlinear::finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt) {
-  system_.acceptState(U);
+void StaticNonlinear::finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double t1, double dt) {
+  system_.acceptState(U, t1);
   previousIncrement_ = U - Ustart;
   previousDt_ = dt;
   ++steps_;
@@ -467,7 +467,7 @@ void StaticNonlinear::run(Eigen::VectorXd& U, const std::vector<double>& times,
                           const std::function<void(const ConvergedInstant&)>& converged) {
   const auto start = Clock::now();
   if (U.size() != n_) throw Error("internal error: the initial state has the wrong size");
-  system_.acceptState(U);  // the initial state, reached from the natural one
+  system_.acceptInitialState(U, times.empty() ? 0.0 : times.front());  // from the natural state or ETAT_INIT's
   std::vector<double> history;
   bool cutFloorReached = false;  // the failure is a step that would be cut below SUBD_PAS_MINI
   // The shortest sub-step without SUBD_PAS_MINI: at the round-off of the instants.

@@ -114,7 +114,7 @@ class StaticNonlinear {
   bool sameConstraints(const Step& step) const;
   void report(const Iteration& it, const char* matrix) const;
   [[noreturn]] void throwSingular(const linalg::SingularMatrixError& e) const;
-  void finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double dt);
+  void finishStep(const Eigen::VectorXd& U, const Eigen::VectorXd& Ustart, double t1, double dt);
   void buildPattern();
   void assemble(const Eigen::VectorXd& U, double t, bool withMatrix, bool naturalState = false);
 

@@ -106,9 +106,6 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
       throw Error("COMPORTEMENT: ITER_INTE_PAS=" + std::to_string(occ.integer("ITER_INTE_PAS")) +
                   ": the local subdivision of the step is not available (only ITER_INTE_PAS=0); "
                   "DEFI_LIST_INST's ECHEC cuts the global step instead");
-    if (occ.real("PARM_THETA") != 1.0)
-      throw Error("COMPORTEMENT: PARM_THETA=" + format::asterValue(occ.real("PARM_THETA")) +
-                  ": only the implicit integration (PARM_THETA=1) is available");
     onlyElastic &= occ.text("RELATION") == "ELAS";
     std::vector<int> cells = occ.has("GROUP_MA") || occ.has("MAILLE") ? selectCells(mesh, occ) : model->cells();
     for (int c : cells) byCell[c] = {&occ, kin};
@@ -134,6 +131,7 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
       if (occ) {
         integration.maxIterations = static_cast<int>(occ->integer("ITER_INTE_MAXI"));
         integration.tolerance = occ->real("RESI_INTE_RELA");
+        integration.theta = occ->real("PARM_THETA");
       }
       problem.relations.push_back(factory.law(occ ? occ->text("RELATION") : "ELAS", site, integration));
     }

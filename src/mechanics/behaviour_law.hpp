@@ -52,6 +52,8 @@ struct LawInput {
   double strainIncrementZZ = 0.0;
   const double* previousStress = nullptr;     // SIXX, SIYY, SIZZ, SIXY of the last accepted state
   const double* previousVariables = nullptr;  // internalVariableCount() values (V1, V2, ...)
+  double time = 0.0;           // INST at the end of the increment
+  double timeIncrement = 0.0;  // its length (0 when the state is the accepted one)
 };
 
 template <class Tangent>

@@ -37,6 +37,8 @@ void LogarithmicStrainLaw::integrate(const LawInput& in, LawOutput<VoigtTangent>
   inner.strainIncrementZZ = current.strainZZ() - previous.strainZZ();
   inner.previousStress = in.previousVariables ? in.previousVariables + own : kNaturalState;  // TXX, TYY, TZZ, TXY
   inner.previousVariables = in.previousVariables;
+  inner.time = in.time;
+  inner.timeIncrement = in.timeIncrement;
   LawOutput<VoigtTangent> response;
   response.variables = out.variables;
   law_->integrate(inner, response, withTangent);

@@ -67,6 +67,8 @@ void integrateLaw(const Law& law, Kinematics kinematics, const typename fem::Cel
     in.strainIncrement = strain - previous;
     in.previousStress = history.stress ? history.stress + 4 * q : kNaturalStress;
     in.previousVariables = count ? history.variables + q * count : nullptr;
+    in.time = history.time;
+    in.timeIncrement = history.timeIncrement;
   }
   law.integrate(in, out, withTangent);
 }
@@ -240,6 +242,8 @@ void integrateAxisymmetricLaw(const Law& law, Kinematics kinematics, const typen
   in.strainIncrementZZ = strainZZ - previousZZ;
   in.previousStress = history.stress ? history.stress + 4 * q : kNaturalStress;
   in.previousVariables = count ? history.variables + q * count : nullptr;
+  in.time = history.time;
+  in.timeIncrement = history.timeIncrement;
   law.integrate(in, out, withTangent);
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "mechanics/hyperelasticity.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
 #include "mechanics/von_mises_plasticity.hpp"
@@ -15,6 +16,7 @@ struct RelationRules {
   const char* name;
   std::vector<const char*> deformations;  // the DEFORMATION words it allows here
   bool axisymmetric;                      // AXIS allowed
+  bool rateDependent = false;             // integrated in time: PARM_THETA applies
 };
 
 // The relations and what code_aster allows each of them (its Behaviours catalogue),
@@ -96,10 +98,13 @@ std::shared_ptr<const mechanics::BehaviourLaw> BehaviourFactory::law(const std::
   if (!rules.axisymmetric && site.modelisation == mechanics::PlaneHypothesis::Axisymmetric)
     throw Error("RELATION='" + relation + "' (cell " + site.cellName +
                 ") is not available in MODELISATION='AXIS' (code_aster allows it in 3D, D_PLAN and C_PLAN)");
+  if (!rules.rateDependent && settings.theta != 1.0)
+    throw Error("COMPORTEMENT: PARM_THETA=" + format::asterValue(settings.theta) + ": RELATION='" + relation +
+                "' does not depend on time and is integrated by the implicit scheme alone (PARM_THETA=1)");
   // The integration settings matter to the von Mises laws only; ELAS and ELAS_HYPER share one law.
   const bool vonMises = relation.compare(0, 5, "VMIS_") == 0;
   const Key key{site.material, static_cast<int>(site.modelisation), relation, static_cast<int>(site.kinematics),
-                vonMises ? settings.maxIterations : 0, vonMises ? settings.tolerance : 0.0};
+                vonMises ? settings.maxIterations : 0, vonMises ? settings.tolerance : 0.0, settings.theta};
   auto& slot = laws_[key];
   if (!slot) {
     try {

@@ -16,10 +16,12 @@
 
 namespace aster::model {
 
-// COMPORTEMENT's ITER_INTE_MAXI and RESI_INTE_RELA (the laws' local iterations).
+// COMPORTEMENT's ITER_INTE_MAXI and RESI_INTE_RELA (the laws' local iterations) and
+// PARM_THETA (the time integration of the rate-dependent laws).
 struct IntegrationSettings {
   int maxIterations = 20;
   double tolerance = 1e-6;
+  double theta = 1.0;
 };
 
 // What a relation is applied to: the cell (for messages) and its data.
@@ -42,7 +44,7 @@ class BehaviourFactory {
                                                      const IntegrationSettings& settings);
 
  private:
-  using Key = std::tuple<const ElasticMaterial*, int, std::string, int, int, double>;
+  using Key = std::tuple<const ElasticMaterial*, int, std::string, int, int, double, double>;
   std::map<Key, std::shared_ptr<const mechanics::BehaviourLaw>> laws_;
 };
 

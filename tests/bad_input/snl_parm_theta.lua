@@ -1,6 +1,6 @@
 -- expect-exit: 2
--- expect-output: <F> <STAT_NON_LINE> .*snl_parm_theta\.lua:12: COMPORTEMENT: PARM_THETA=0\.57: only the implicit integration \(PARM_THETA=1\) is available
--- The theta method of the local integration is implicit only: another theta is refused by name.
+-- expect-output: <F> <STAT_NON_LINE> .*snl_parm_theta\.lua:12: COMPORTEMENT: PARM_THETA=0\.57: RELATION='VMIS_ISOT_LINE' does not depend on time and is integrated by the implicit scheme alone \(PARM_THETA=1\)
+-- A law that does not depend on time is integrated by the implicit scheme only: another theta is refused by name.
 DEBUT{}
 DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
 MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
