@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -45,6 +46,57 @@ Layout layoutOf(VonMisesVariables v) {
 
 // Tensor components in the order xx, yy, zz, xy; the contraction a:b counts xy twice.
 double contract(const double a[4], const double b[4]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2 * a[3] * b[3]; }
+
+// A root of the increasing function f with f(0) < 0, from the guess xap: secant steps
+// until the root is bracketed, then secant steps kept inside the bracket (bisection when
+// one leaves it), until |f| < tolerance, or |f| is at the rounding of `scale` (a
+// tolerance below rounding asks no more). This is the root finder code_aster's von
+// Mises laws use in plane stress ("DEKKER"); the same iterates give the same stresses.
+template <class F>
+bool secantRoot(const F& f, double xap, double tolerance, double scale, int maxIterations, double& root) {
+  const double floor = std::max(tolerance, 8 * std::numeric_limits<double>::epsilon() * scale);
+  double x = 0, fx = f(x);
+  if (std::fabs(fx) < floor) {
+    root = 0;
+    return true;
+  }
+  double y = xap, fy = f(y);
+  int evaluations = 1;
+  for (;;) {
+    if (fy > 0) {
+      double a = x, b = y;
+      for (;;) {
+        if (fx == fy) return false;
+        double z = y - (y - x) * fy / (fy - fx);
+        if ((z - a) * (z - b) > 0) z = 0.5 * (a + b);
+        const double fz = f(z);
+        ++evaluations;
+        if (std::fabs(fz) < floor) {
+          root = z;
+          return true;
+        }
+        if (evaluations > maxIterations) return false;
+        (fz < 0 ? a : b) = z;
+        x = y;
+        fx = fy;
+        y = z;
+        fy = fz;
+      }
+    }
+    if (fy < fx || fx == fy) return false;
+    const double z = y - (y - x) * fy / (fy - fx);
+    ++evaluations;
+    x = y;
+    fx = fy;
+    y = z;
+    fy = f(z);
+    if (std::fabs(fy) < floor) {
+      root = z;
+      return true;
+    }
+    if (evaluations > maxIterations) return false;
+  }
+}
 
 }  // namespace
 
@@ -183,6 +235,83 @@ void VonMisesPlasticity::returnMap(const LawInput& in, const double de[4], bool 
   }
 }
 
+void VonMisesPlasticity::planeStressIsotropicReturn(const LawInput& in, double de[4], bool atRest,
+                                                    double stress[4], double* variables,
+                                                    VoigtTangent* tangent) const {
+  const double E = parameters_.young, nu = parameters_.poisson;
+  const IsotropicHardening& R = parameters_.hardening;
+  const double pn = in.previousVariables[0];
+  const double* sn = in.previousStress;
+  // The elastic trial with the elastic guess of de_zz: deviatoric s_el, its q = (s_el)_eq.
+  const double meanN = (sn[0] + sn[1] + sn[2]) / 3.0;
+  double meanDe = (de[0] + de[1] + de[2]) / 3.0;
+  double deDev[4], trial[4];
+  for (int i = 0; i < 4; ++i) {
+    deDev[i] = i < 3 ? de[i] - meanDe : de[i];
+    trial[i] = sn[i] - (i < 3 ? meanN : 0.0) + 2 * mu_ * deDev[i];
+  }
+  double q = std::sqrt(1.5 * contract(trial, trial));
+  const double Rn = R.value(pn);
+  if (std::fabs(q - Rn) <= std::numeric_limits<double>::epsilon() * Rn) q = Rn;
+  const bool plastic = !atRest && q > Rn;
+  double dp = 0, Rp = Rn;
+  if (plastic) {
+    // With dp, s_zz = 0 asks de_zz += dx(dp); the yield condition is then one equation in dp.
+    auto zzCorrection = [&](double x, double Rx) { return 3 * (1 - 2 * nu) * trial[kZZ] * x / (E * x + 2 * (1 - nu) * Rx); };
+    auto yield = [&](double x) {
+      const double Rx = R.value(pn + x), dx = zzCorrection(x, Rx);
+      const double a = trial[kXX] - 2 * mu_ / 3 * dx, b = trial[kYY] - 2 * mu_ / 3 * dx;
+      const double c = trial[kZZ] + 4 * mu_ / 3 * dx;
+      return 3 * mu_ * x - std::sqrt(1.5 * (a * a + b * b + c * c + 2 * trial[kXY] * trial[kXY])) + Rx;
+    };
+    const double guess = R.returnIncrement(q, 3 * mu_, pn);  // the return without plane stress
+    if (!secantRoot(yield, guess, parameters_.tolerance * R.yield(), q, parameters_.maxIterations, dp))
+      throw Error("von Mises plasticity in plane stress: the yield equation is not solved to RESI_INTE_RELA x SY = " +
+                  format::shortest(parameters_.tolerance * R.yield()) + " in ITER_INTE_MAXI = " +
+                  std::to_string(parameters_.maxIterations) + " iterations");
+    Rp = R.value(pn + dp);
+    const double dx = zzCorrection(dp, Rp);
+    de[kZZ] += dx;
+    meanDe += dx / 3;
+    deDev[kXX] -= dx / 3;
+    deDev[kYY] -= dx / 3;
+    deDev[kZZ] += 2 * dx / 3;
+  }
+  // The radial return with this dp: s = (s_n + 2 mu dev(de)) R / (R + 3 mu dp).
+  const double shrink = Rp / (Rp + 3 * mu_ * dp);
+  double s[4];
+  for (int i = 0; i < 4; ++i) {
+    s[i] = (sn[i] - (i < 3 ? meanN : 0.0) + 2 * mu_ * deDev[i]) * shrink;
+    stress[i] = s[i] + (i < 3 ? meanN + 3 * bulk_ * meanDe : 0.0);
+  }
+  if (variables) {
+    variables[0] = pn + dp;
+    variables[1] = plastic ? 1.0 : 0.0;
+  }
+  if (!tangent) return;
+  // The consistent tangent of the 3D return written with the final s (dp / R = (1/shrink - 1) / 3 mu),
+  // kept elastic (divided by a) when s turns against the increment, condensed on s_zz = 0. At
+  // rest after a plastic step, the continuum tangent at the previous stress (dp = 0, R = s_eq).
+  VoigtTangent& D = *tangent;
+  D.setZero();
+  const double a = plastic ? 1 / shrink : 1.0;
+  const bool continuum = atRest && in.previousVariables[1] > 0.5;
+  if (continuum) Rp = std::sqrt(1.5 * contract(s, s));
+  if ((plastic && contract(s, deDev) >= 0) || (continuum && Rp > 0)) {
+    const double slope = R.slope(pn + dp);
+    const double coef = -(9 * mu_ * mu_) / (3 * mu_ + slope) / (Rp * Rp) * (1 - dp * slope / Rp) / a;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) D(i, j) = coef * s[i] * s[j];
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) D(i, j) += bulk_ + 2 * mu_ / a * ((i == j ? 1.0 : 0.0) - 1.0 / 3.0);
+  D(kXY, kXY) += mu_ / a;
+  const Eigen::Vector4d column = D.col(kZZ);
+  D -= column * D.row(kZZ) / D(kZZ, kZZ);
+  D.row(kZZ).setZero();
+  D.col(kZZ).setZero();
+}
+
 void VonMisesPlasticity::integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const {
   static constexpr double kNatural[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   LawInput input = in;
@@ -198,6 +327,11 @@ void VonMisesPlasticity::integrate(const LawInput& in, LawOutput<VoigtTangent>& 
     if (hypothesis_ == PlaneHypothesis::PlaneStrain) de[2] = 0.0;
     returnMap(input, de, atRest, stress, out.variables, withTangent ? &D : nullptr, plastic);
     out.strainZZ = hypothesis_ == PlaneHypothesis::PlaneStrain ? 0.0 : in.strainZZ;
+  } else if (parameters_.variables == VonMisesVariables::Isotropic) {
+    const double lambda = bulk_ - 2.0 * mu_ / 3.0;
+    de[2] = -(lambda * (de[0] + de[1]) + in.previousStress[kZZ]) / (lambda + 2 * mu_);
+    planeStressIsotropicReturn(input, de, atRest, stress, out.variables, withTangent ? &D : nullptr);
+    out.strainZZ = (stress[0] + stress[1] + stress[2]) / (3 * bulk_) - in.strain(0, 0) - in.strain(1, 1);
   } else {
     // s_zz(de_zz) = 0 by Newton from the elastic guess (which makes the trial s_zz zero).
     const double lambda = bulk_ - 2.0 * mu_ / 3.0;

@@ -14,7 +14,10 @@
 // The strain may be small (PETIT) or Green-Lagrange (GROT_GDEP, the law then in
 // E and S). Plane stress (C_PLAN): the law finds the zz strain increment that
 // makes s_zz = 0 by Newton on the same integration (to rounding), and returns
-// the tangent condensed on s_zz = 0.
+// the tangent condensed on s_zz = 0. With isotropic hardening alone (VMIS_ISOT_*),
+// plane stress is integrated as code_aster does it instead: one scalar equation in
+// dp, in which s_zz = 0 holds in closed form for any dp, solved by the secant method
+// to RESI_INTE_RELA x SY (the yield condition holds to that tolerance).
 //
 // Internal variables per Gauss point, as code_aster orders them:
 //   Isotropic (VMIS_ISOT_*):   V1 EPSPEQ (p), V2 INDIPLAS (1 if the step was plastic)
@@ -76,6 +79,14 @@ class VonMisesPlasticity final : public BehaviourLaw {
   // step is the continuum elastic-plastic one, as code_aster's.
   void returnMap(const LawInput& in, const double de[4], bool atRest, double stress[4], double* variables,
                  VoigtTangent* tangent, bool& plastic) const;
+  // Plane stress with isotropic hardening alone, as code_aster integrates it: de[2]
+  // (the zz increment) comes in as the elastic guess; the return solves one scalar
+  // yield equation in dp, the zz strain following from s_zz = 0 in closed form, to
+  // within RESI_INTE_RELA x SY. Writes stress, variables and the condensed tangent.
+  // atRest (a step's prediction): after a plastic step, the continuum tangent at the
+  // previous stress, as code_aster's RIGI_MECA_TANG.
+  void planeStressIsotropicReturn(const LawInput& in, double de[4], bool atRest, double stress[4],
+                                  double* variables, VoigtTangent* tangent) const;
 
   VonMisesParameters parameters_;
   PlaneHypothesis hypothesis_;

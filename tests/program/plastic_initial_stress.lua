@@ -7,7 +7,8 @@
 -- edge). Uniaxial stress from S0: the trial stress S0 + E e = 500 exceeds SY, and one radial
 -- return (exact here: the direction stays the axis) gives p = (S0 + E e - SY) / (E + H),
 -- SIYY = SY + H p, H = E ET / (E - ET). Without the prestress p would be (E e - SY) / (E + H).
--- At INST 0 the stored state is the prestress itself, with V1 = 0.
+-- At INST 0 the stored state is the prestress itself, with V1 = 0. The plane stress return
+-- holds the yield condition to RESI_INTE_RELA x SY: 1e-14 here, for the closed form to 1e-9.
 local E, NU, ET, SY, S0, e = 200000.0, 0.3, 2000.0, 200.0, 100.0, 0.002
 local H = E * ET / (E - ET)
 local p = (S0 + E * e - SY) / (E + H)
@@ -23,7 +24,7 @@ SIG0 = CREA_CHAMP{TYPE_CHAM = 'CART_SIEF_R', OPERATION = 'AFFE', MODELE = MO,
                   AFFE = {TOUT = 'OUI', NOM_CMP = {'SIXX', 'SIYY', 'SIZZ', 'SIXY'}, VALE = {0.0, S0, 0.0, 0.0}}}
 L = DEFI_LIST_REEL{VALE = {0.0, 1.0}}
 R = STAT_NON_LINE{MODELE = MO, CHAM_MATER = CM, EXCIT = {{CHARGE = BC}, {CHARGE = PULL, FONC_MULT = RAMPE}},
-                  COMPORTEMENT = {RELATION = 'VMIS_ISOT_LINE'}, ETAT_INIT = {SIGM = SIG0}, INCREMENT = {LIST_INST = L},
+                  COMPORTEMENT = {RELATION = 'VMIS_ISOT_LINE', RESI_INTE_RELA = 1e-14}, ETAT_INIT = {SIGM = SIG0}, INCREMENT = {LIST_INST = L},
                   CONVERGENCE = {RESI_GLOB_RELA = 1e-12}}
 local function ref(v, inst, cham, cmp, point)
   return {RESULTAT = R, INST = inst, NOM_CHAM = cham, NOM_CMP = cmp, MAILLE = 'M1', POINT = point,

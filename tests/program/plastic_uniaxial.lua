@@ -4,7 +4,8 @@
 -- DDL_IMPO (DY = 0 on BAS, DX = 0 on GAUCHE, DY = e(t) on HAUT): e = 0.002, 0.004 (plastic
 -- loading from the elastic limit 0.001) then 0.003 (elastic unloading), E = 200000,
 -- NU = 0.3, ECRO_LINE D_SIGM_EPSI = ET = 2000, SY = 200. The state is homogeneous and
--- its closed form, derived by hand, is:
+-- its closed form, derived by hand, is (RESI_INTE_RELA = 1e-14: the plane stress return
+-- holds the yield condition to RESI_INTE_RELA x SY, as code_aster's):
 --  * C_PLAN and AXIS (DROITE free: uniaxial stress, SIXX = SIZZ = 0): the hardening
 --    slope in p is H = E ET / (E - ET); in loading e = s / E + p and s = SY + H p, so
 --    p = (E e - SY) / (E + H); in unloading p stays and s drops by E de.
@@ -77,7 +78,7 @@ for _, modelisation in ipairs({'D_PLAN', 'C_PLAN', 'AXIS'}) do
   local PULL = AFFE_CHAR_MECA{MODELE = MO, DDL_IMPO = {GROUP_MA = 'HAUT', DY = 1.0}}
   local function run(extra)
     local k = {MODELE = MO, CHAM_MATER = CM, EXCIT = {{CHARGE = BC}, {CHARGE = PULL, FONC_MULT = EPS}},
-               COMPORTEMENT = {RELATION = 'VMIS_ISOT_LINE'}, INCREMENT = {LIST_INST = L},
+               COMPORTEMENT = {RELATION = 'VMIS_ISOT_LINE', RESI_INTE_RELA = 1e-14}, INCREMENT = {LIST_INST = L},
                CONVERGENCE = {RESI_GLOB_RELA = 1e-12}, INFO = 1}
     for key, value in pairs(extra or {}) do k[key] = value end
     return STAT_NON_LINE(k)
