@@ -95,6 +95,10 @@ double ViscDruckerPrager::solve(double f1, double i1e, double dt, const DruckerP
   double lower = 0, upper = m.a * std::pow(f1 / m.pref, m.n) * dt;
   const double scale = F.value(0);  // the residual the tolerance is relative to
   const double tol = parameters_.tolerance;
+  if (!(scale > 0)) {  // a rate below the smallest double: no flow
+    nbIter = 1;
+    return 0.0;
+  }
   if (std::fabs(F.value(upper) / scale) <= tol) {
     nbIter = 1;
     return upper;

@@ -109,9 +109,9 @@ std::shared_ptr<const mechanics::BehaviourLaw> BehaviourFactory::law(const std::
     throw Error("COMPORTEMENT: PARM_THETA=" + format::asterValue(settings.theta) + ": RELATION='" + relation +
                 "' does not depend on time and is integrated by the implicit scheme alone (PARM_THETA=1)");
   // The integration settings matter to the von Mises laws and VISC_DRUC_PRAG only; ELAS and ELAS_HYPER share one law.
-  const bool vonMises = relation.compare(0, 5, "VMIS_") == 0 || relation == "VISC_DRUC_PRAG";
+  const bool iterates = relation.compare(0, 5, "VMIS_") == 0 || relation == "VISC_DRUC_PRAG";
   const Key key{site.material, static_cast<int>(site.modelisation), relation, static_cast<int>(site.kinematics),
-                vonMises ? settings.maxIterations : 0, vonMises ? settings.tolerance : 0.0, settings.theta};
+                iterates ? settings.maxIterations : 0, iterates ? settings.tolerance : 0.0, settings.theta};
   auto& slot = laws_[key];
   if (!slot) {
     try {
