@@ -69,6 +69,13 @@ ConceptPtr defiMateriau(const Keywords& k, Session& session, ConceptPtr) {
     h.rho = hyper.real("RHO");
     m->hyper = h;
   }
+  if (k.has("VISC_DRUC_PRAG")) {
+    const auto& v = k.factor("VISC_DRUC_PRAG").front();
+    m->viscDrucPrag = mechanics::ViscDruckerPragerMaterial{
+        v.real("PREF"),    v.real("A"),       v.real("N"),         v.real("P_PIC"),     v.real("P_ULT"),
+        v.real("ALPHA_0"), v.real("ALPHA_PIC"), v.real("ALPHA_ULT"), v.real("R_0"),       v.real("R_PIC"),
+        v.real("R_ULT"),   v.real("BETA_0"),  v.real("BETA_PIC"),  v.real("BETA_ULT")};
+  }
   return std::make_shared<MaterialConcept>(m);
 }
 

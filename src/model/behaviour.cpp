@@ -8,6 +8,7 @@
 #include "mechanics/hyperelasticity.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
 #include "mechanics/von_mises_plasticity.hpp"
+#include "mechanics/visc_drucker_prager.hpp"
 
 namespace aster::model {
 namespace {
@@ -30,6 +31,7 @@ const RelationRules* rulesOf(const std::string& relation) {
       {"VMIS_ECMI_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"VMIS_ECMI_TRAC", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"ELAS_HYPER", {"GROT_GDEP"}, false},
+      {"VISC_DRUC_PRAG", {"PETIT"}, true, true},
   };
   for (const auto& r : rules)
     if (relation == r.name) return &r;
@@ -60,6 +62,11 @@ std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation
   }
   needs(m.hasElas, "ELAS");
   if (relation == "ELAS") return std::make_shared<mechanics::IsotropicElasticity>(m.E, m.NU, hypothesis);
+  if (relation == "VISC_DRUC_PRAG") {
+    needs(m.viscDrucPrag.has_value(), "VISC_DRUC_PRAG");
+    mechanics::ViscDruckerPragerParameters v{m.E, m.NU, *m.viscDrucPrag, settings.maxIterations, settings.tolerance};
+    return std::make_shared<mechanics::ViscDruckerPrager>(v, hypothesis);
+  }
   mechanics::VonMisesParameters p;
   if (relation == "VMIS_ISOT_LINE") {
     needs(m.ecroLine.has_value(), "ECRO_LINE");
@@ -101,10 +108,10 @@ std::shared_ptr<const mechanics::BehaviourLaw> BehaviourFactory::law(const std::
   if (!rules.rateDependent && settings.theta != 1.0)
     throw Error("COMPORTEMENT: PARM_THETA=" + format::asterValue(settings.theta) + ": RELATION='" + relation +
                 "' does not depend on time and is integrated by the implicit scheme alone (PARM_THETA=1)");
-  // The integration settings matter to the von Mises laws only; ELAS and ELAS_HYPER share one law.
-  const bool vonMises = relation.compare(0, 5, "VMIS_") == 0;
+  // The integration settings matter to the von Mises laws and VISC_DRUC_PRAG only; ELAS and ELAS_HYPER share one law.
+  const bool iterates = relation.compare(0, 5, "VMIS_") == 0 || relation == "VISC_DRUC_PRAG";
   const Key key{site.material, static_cast<int>(site.modelisation), relation, static_cast<int>(site.kinematics),
-                vonMises ? settings.maxIterations : 0, vonMises ? settings.tolerance : 0.0, settings.theta};
+                iterates ? settings.maxIterations : 0, iterates ? settings.tolerance : 0.0, settings.theta};
   auto& slot = laws_[key];
   if (!slot) {
     try {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mechanics/von_mises_plasticity.hpp"
+#include "mechanics/visc_drucker_prager.hpp"
 
 namespace aster::model {
 
@@ -37,6 +38,7 @@ struct ElasticMaterial {
   std::optional<mechanics::TractionCurve> traction;  // TRACTION
   std::optional<double> prager;                      // PRAGER's C
   std::optional<HyperelasticData> hyper;             // ELAS_HYPER
+  std::optional<mechanics::ViscDruckerPragerMaterial> viscDrucPrag;  // VISC_DRUC_PRAG
 };
 
 using MaterialPtr = std::shared_ptr<const ElasticMaterial>;
