@@ -1,5 +1,5 @@
 // DEFI_MATERIAU: the data of a material's behaviours (ELAS, ECRO_LINE, TRACTION,
-// PRAGER, ELAS_HYPER). Each relation checks its own parameters when STAT_NON_LINE
+// PRAGER, ELAS_HYPER, LEMAITRE, VISC_ENDO). Each relation checks its own parameters when STAT_NON_LINE
 // builds it (model/behaviour.hpp); here only what each keyword alone requires.
 #include "commands/function_concepts.hpp"
 #include "commands/model_concepts.hpp"
@@ -68,6 +68,14 @@ ConceptPtr defiMateriau(const Keywords& k, Session& session, ConceptPtr) {
     else h.poisson = hyper.real("NU");
     h.rho = hyper.real("RHO");
     m->hyper = h;
+  }
+  if (k.has("LEMAITRE")) {
+    const auto& lemaitre = k.factor("LEMAITRE").front();
+    m->lemaitre = model::LemaitreData{lemaitre.real("N"), lemaitre.real("UN_SUR_K"), lemaitre.real("UN_SUR_M")};
+  }
+  if (k.has("VISC_ENDO")) {
+    const auto& endo = k.factor("VISC_ENDO").front();
+    m->viscEndo = model::ViscousDamageData{endo.real("SY"), endo.real("R_D"), endo.real("A_D")};
   }
   return std::make_shared<MaterialConcept>(m);
 }

@@ -7,6 +7,7 @@
 #include "core/number_format.hpp"
 #include "mechanics/hyperelasticity.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
+#include "mechanics/visc_endo_lemaitre.hpp"
 #include "mechanics/von_mises_plasticity.hpp"
 
 namespace aster::model {
@@ -30,6 +31,7 @@ const RelationRules* rulesOf(const std::string& relation) {
       {"VMIS_ECMI_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"VMIS_ECMI_TRAC", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"ELAS_HYPER", {"GROT_GDEP"}, false},
+      {"VISC_ENDO_LEMA", {"PETIT"}, true, true},
   };
   for (const auto& r : rules)
     if (relation == r.name) return &r;
@@ -60,6 +62,15 @@ std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation
   }
   needs(m.hasElas, "ELAS");
   if (relation == "ELAS") return std::make_shared<mechanics::IsotropicElasticity>(m.E, m.NU, hypothesis);
+  if (relation == "VISC_ENDO_LEMA") {
+    needs(m.lemaitre.has_value(), "LEMAITRE");
+    needs(m.viscEndo.has_value(), "VISC_ENDO");
+    auto p = mechanics::viscEndoLemaitreParameters(m.E, m.NU, m.lemaitre->n, m.lemaitre->unSurK, m.lemaitre->unSurM,
+                                                   m.viscEndo->yield, m.viscEndo->rD, m.viscEndo->aD);
+    p.maxIterations = settings.maxIterations;
+    p.tolerance = settings.tolerance;
+    return std::make_shared<mechanics::ViscEndoLemaitre>(p, hypothesis);
+  }
   mechanics::VonMisesParameters p;
   if (relation == "VMIS_ISOT_LINE") {
     needs(m.ecroLine.has_value(), "ECRO_LINE");
@@ -101,8 +112,9 @@ std::shared_ptr<const mechanics::BehaviourLaw> BehaviourFactory::law(const std::
   if (!rules.rateDependent && settings.theta != 1.0)
     throw Error("COMPORTEMENT: PARM_THETA=" + format::asterValue(settings.theta) + ": RELATION='" + relation +
                 "' does not depend on time and is integrated by the implicit scheme alone (PARM_THETA=1)");
-  // The integration settings matter to the von Mises laws only; ELAS and ELAS_HYPER share one law.
-  const bool vonMises = relation.compare(0, 5, "VMIS_") == 0;
+  // The integration settings matter to the von Mises laws and VISC_ENDO_LEMA only; ELAS and
+  // ELAS_HYPER share one law.
+  const bool vonMises = relation.compare(0, 5, "VMIS_") == 0 || relation == "VISC_ENDO_LEMA";
   const Key key{site.material, static_cast<int>(site.modelisation), relation, static_cast<int>(site.kinematics),
                 vonMises ? settings.maxIterations : 0, vonMises ? settings.tolerance : 0.0, settings.theta};
   auto& slot = laws_[key];
