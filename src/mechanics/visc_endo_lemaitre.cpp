@@ -189,7 +189,7 @@ void ViscEndoLemaitre::integrate(const LawInput& in, LawOutput<VoigtTangent>& ou
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) T(i, j) = (1 - D) * bulk_ + shear * ((i == j ? 1.0 : 0.0) - 1.0 / 3.0);
   T(kXY, kXY) = shear / 2;
-  if (flows) {
+  if (flows && flow.dG < 0) {  // dG < 0 at every root but x = 0 (a bracket closed on 0)
     double N[4];
     for (int i = 0; i < 4; ++i) N[i] = se[i] / q;
     const double duDq = -(1 - D) / flow.dG;
