@@ -1,5 +1,5 @@
 // DEFI_MATERIAU: the data of a material's behaviours (ELAS, ECRO_LINE, TRACTION,
-// PRAGER, ELAS_HYPER). Each relation checks its own parameters when STAT_NON_LINE
+// PRAGER, ELAS_HYPER, LEMAITRE, VISC_ENDO). Each relation checks its own parameters when STAT_NON_LINE
 // builds it (model/behaviour.hpp); here only what each keyword alone requires.
 #include "commands/function_concepts.hpp"
 #include "commands/model_concepts.hpp"
@@ -75,6 +75,14 @@ ConceptPtr defiMateriau(const Keywords& k, Session& session, ConceptPtr) {
         v.real("PREF"),    v.real("A"),       v.real("N"),         v.real("P_PIC"),     v.real("P_ULT"),
         v.real("ALPHA_0"), v.real("ALPHA_PIC"), v.real("ALPHA_ULT"), v.real("R_0"),       v.real("R_PIC"),
         v.real("R_ULT"),   v.real("BETA_0"),  v.real("BETA_PIC"),  v.real("BETA_ULT")};
+  }
+  if (k.has("LEMAITRE")) {
+    const auto& lemaitre = k.factor("LEMAITRE").front();
+    m->lemaitre = model::LemaitreData{lemaitre.real("N"), lemaitre.real("UN_SUR_K"), lemaitre.real("UN_SUR_M")};
+  }
+  if (k.has("VISC_ENDO")) {
+    const auto& endo = k.factor("VISC_ENDO").front();
+    m->viscEndo = model::ViscousDamageData{endo.real("SY"), endo.real("R_D"), endo.real("A_D")};
   }
   return std::make_shared<MaterialConcept>(m);
 }

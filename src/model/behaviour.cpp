@@ -7,6 +7,7 @@
 #include "core/number_format.hpp"
 #include "mechanics/hyperelasticity.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
+#include "mechanics/visc_endo_lemaitre.hpp"
 #include "mechanics/von_mises_plasticity.hpp"
 #include "mechanics/visc_drucker_prager.hpp"
 
@@ -32,6 +33,7 @@ const RelationRules* rulesOf(const std::string& relation) {
       {"VMIS_ECMI_TRAC", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"ELAS_HYPER", {"GROT_GDEP"}, false},
       {"VISC_DRUC_PRAG", {"PETIT"}, true, true},
+      {"VISC_ENDO_LEMA", {"PETIT"}, true, true},
   };
   for (const auto& r : rules)
     if (relation == r.name) return &r;
@@ -66,6 +68,15 @@ std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation
     needs(m.viscDrucPrag.has_value(), "VISC_DRUC_PRAG");
     mechanics::ViscDruckerPragerParameters v{m.E, m.NU, *m.viscDrucPrag, settings.maxIterations, settings.tolerance};
     return std::make_shared<mechanics::ViscDruckerPrager>(v, hypothesis);
+  }
+  if (relation == "VISC_ENDO_LEMA") {
+    needs(m.lemaitre.has_value(), "LEMAITRE");
+    needs(m.viscEndo.has_value(), "VISC_ENDO");
+    auto p = mechanics::viscEndoLemaitreParameters(m.E, m.NU, m.lemaitre->n, m.lemaitre->unSurK, m.lemaitre->unSurM,
+                                                   m.viscEndo->yield, m.viscEndo->rD, m.viscEndo->aD);
+    p.maxIterations = settings.maxIterations;
+    p.tolerance = settings.tolerance;
+    return std::make_shared<mechanics::ViscEndoLemaitre>(p, hypothesis);
   }
   mechanics::VonMisesParameters p;
   if (relation == "VMIS_ISOT_LINE") {
@@ -108,8 +119,8 @@ std::shared_ptr<const mechanics::BehaviourLaw> BehaviourFactory::law(const std::
   if (!rules.rateDependent && settings.theta != 1.0)
     throw Error("COMPORTEMENT: PARM_THETA=" + format::asterValue(settings.theta) + ": RELATION='" + relation +
                 "' does not depend on time and is integrated by the implicit scheme alone (PARM_THETA=1)");
-  // The integration settings matter to the von Mises laws and VISC_DRUC_PRAG only; ELAS and ELAS_HYPER share one law.
-  const bool iterates = relation.compare(0, 5, "VMIS_") == 0 || relation == "VISC_DRUC_PRAG";
+  // The integration settings matter to the laws that iterate; ELAS and ELAS_HYPER share one law.
+  const bool iterates = relation != "ELAS" && relation != "ELAS_HYPER";
   const Key key{site.material, static_cast<int>(site.modelisation), relation, static_cast<int>(site.kinematics),
                 iterates ? settings.maxIterations : 0, iterates ? settings.tolerance : 0.0, settings.theta};
   auto& slot = laws_[key];

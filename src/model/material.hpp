@@ -1,4 +1,5 @@
-// DEFI_MATERIAU's data (ELAS, ECRO_LINE, TRACTION, PRAGER, ELAS_HYPER) and
+// DEFI_MATERIAU's data (ELAS, ECRO_LINE, TRACTION, PRAGER, ELAS_HYPER, LEMAITRE,
+// VISC_ENDO) and
 // AFFE_MATERIAU's assignment of materials to cells. The laws are built from it
 // by model/behaviour.hpp.
 #pragma once
@@ -26,6 +27,20 @@ struct HyperelasticData {
   double rho = 0.0;
 };
 
+// LEMAITRE: Lemaitre's viscous flow, r' = ((sigma_eq - SY) / (K r^(1/M)))^N, K = 1/UN_SUR_K.
+struct LemaitreData {
+  double n = 0.0;       // N
+  double unSurK = 0.0;  // UN_SUR_K
+  double unSurM = 0.0;  // UN_SUR_M
+};
+
+// VISC_ENDO: the threshold and the damage of VISC_ENDO_LEMA.
+struct ViscousDamageData {
+  double yield = 0.0;  // SY
+  double rD = 0.0;     // R_D
+  double aD = 0.0;     // A_D
+};
+
 // A material of DEFI_MATERIAU: its keywords that were given.
 struct ElasticMaterial {
   bool hasElas = true;  // ELAS given (E, NU, RHO below are ELAS's)
@@ -39,6 +54,8 @@ struct ElasticMaterial {
   std::optional<double> prager;                      // PRAGER's C
   std::optional<HyperelasticData> hyper;             // ELAS_HYPER
   std::optional<mechanics::ViscDruckerPragerMaterial> viscDrucPrag;  // VISC_DRUC_PRAG
+  std::optional<LemaitreData> lemaitre;              // LEMAITRE
+  std::optional<ViscousDamageData> viscEndo;         // VISC_ENDO
 };
 
 using MaterialPtr = std::shared_ptr<const ElasticMaterial>;
