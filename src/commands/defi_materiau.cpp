@@ -1,5 +1,5 @@
 // DEFI_MATERIAU: the data of a material's behaviours (ELAS, ECRO_LINE, TRACTION,
-// PRAGER, ELAS_HYPER). Each relation checks its own parameters when STAT_NON_LINE
+// PRAGER, ELAS_HYPER, DRUCK_PRAGER). Each relation checks its own parameters when STAT_NON_LINE
 // builds it (model/behaviour.hpp); here only what each keyword alone requires.
 #include "commands/function_concepts.hpp"
 #include "commands/model_concepts.hpp"
@@ -68,6 +68,18 @@ ConceptPtr defiMateriau(const Keywords& k, Session& session, ConceptPtr) {
     else h.poisson = hyper.real("NU");
     h.rho = hyper.real("RHO");
     m->hyper = h;
+  }
+  if (k.has("DRUCK_PRAGER")) {
+    const auto& dp = k.factor("DRUCK_PRAGER").front();
+    model::DruckerPragerData d;
+    d.alpha = dp.real("ALPHA");
+    d.yield = dp.real("SY");
+    d.ultimateStrain = dp.real("P_ULTM");
+    d.parabolic = dp.text("ECROUISSAGE") == "PARABOLIQUE";
+    if (d.parabolic) d.ultimateYield = dp.real("SY_ULTM");
+    else d.slope = dp.real("H");
+    d.dilatancy = dp.real("DILAT");
+    m->druckerPrager = d;
   }
   return std::make_shared<MaterialConcept>(m);
 }

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "mechanics/drucker_prager.hpp"
 #include "mechanics/hyperelasticity.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
 #include "mechanics/von_mises_plasticity.hpp"
@@ -30,6 +31,8 @@ const RelationRules* rulesOf(const std::string& relation) {
       {"VMIS_ECMI_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"VMIS_ECMI_TRAC", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"ELAS_HYPER", {"GROT_GDEP"}, false},
+      {"DRUCK_PRAGER", {"PETIT", "GROT_GDEP"}, true},
+      {"DRUCK_PRAG_N_A", {"PETIT", "GROT_GDEP"}, true},
   };
   for (const auto& r : rules)
     if (relation == r.name) return &r;
@@ -60,6 +63,23 @@ std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation
   }
   needs(m.hasElas, "ELAS");
   if (relation == "ELAS") return std::make_shared<mechanics::IsotropicElasticity>(m.E, m.NU, hypothesis);
+  if (relation == "DRUCK_PRAGER" || relation == "DRUCK_PRAG_N_A") {
+    needs(m.druckerPrager.has_value(), "DRUCK_PRAGER");
+    const DruckerPragerData& d = *m.druckerPrager;
+    mechanics::DruckerPragerParameters p;
+    p.young = m.E;
+    p.poisson = m.NU;
+    p.alpha = d.alpha;
+    p.yield = d.yield;
+    p.ultimateStrain = d.ultimateStrain;
+    p.hardening = d.parabolic ? mechanics::DruckerPragerParameters::Hardening::Parabolic
+                              : mechanics::DruckerPragerParameters::Hardening::Linear;
+    p.slope = d.slope;
+    p.ultimateYield = d.ultimateYield;
+    p.associated = relation == "DRUCK_PRAGER";
+    p.dilatancy = d.dilatancy;
+    return std::make_shared<mechanics::DruckerPrager>(p, hypothesis);
+  }
   mechanics::VonMisesParameters p;
   if (relation == "VMIS_ISOT_LINE") {
     needs(m.ecroLine.has_value(), "ECRO_LINE");

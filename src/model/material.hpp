@@ -1,4 +1,4 @@
-// DEFI_MATERIAU's data (ELAS, ECRO_LINE, TRACTION, PRAGER, ELAS_HYPER) and
+// DEFI_MATERIAU's data (ELAS, ECRO_LINE, TRACTION, PRAGER, ELAS_HYPER, DRUCK_PRAGER) and
 // AFFE_MATERIAU's assignment of materials to cells. The laws are built from it
 // by model/behaviour.hpp.
 #pragma once
@@ -25,6 +25,15 @@ struct HyperelasticData {
   double rho = 0.0;
 };
 
+// DRUCK_PRAGER: the yield function and hardening of the Drucker-Prager laws.
+struct DruckerPragerData {
+  double alpha = 0.0, yield = 0.0, ultimateStrain = 0.0;  // ALPHA, SY, P_ULTM
+  bool parabolic = false;                                 // ECROUISSAGE='PARABOLIQUE' (else LINEAIRE)
+  double slope = 0.0;                                     // H (LINEAIRE)
+  double ultimateYield = 0.0;                             // SY_ULTM (PARABOLIQUE)
+  double dilatancy = 0.0;                                 // DILAT
+};
+
 // A material of DEFI_MATERIAU: its keywords that were given.
 struct ElasticMaterial {
   bool hasElas = true;  // ELAS given (E, NU, RHO below are ELAS's)
@@ -37,6 +46,7 @@ struct ElasticMaterial {
   std::optional<mechanics::TractionCurve> traction;  // TRACTION
   std::optional<double> prager;                      // PRAGER's C
   std::optional<HyperelasticData> hyper;             // ELAS_HYPER
+  std::optional<DruckerPragerData> druckerPrager;    // DRUCK_PRAGER
 };
 
 using MaterialPtr = std::shared_ptr<const ElasticMaterial>;
