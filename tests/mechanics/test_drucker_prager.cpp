@@ -299,6 +299,49 @@ TEST(DruckerPrager, ConsistentTangentAgainstFiniteDifferences) {
   Eigen::Matrix2d e = diag(0.012, 0.010);
   e(0, 1) = e(1, 0) = 0.001;
   expectTangent(point, e, 0.011, "apex");
+  // The apex of the non-associated law (dilatancy left: a small extension).
+  DruckerPrager nonAssociated(parabolic(1.6, false, 0.05), PlaneHypothesis::Axisymmetric);
+  Point fromRest(nonAssociated);
+  Eigen::Matrix2d small = diag(0.00082, 0.0008);
+  small(0, 1) = small(1, 0) = 1e-5;
+  std::vector<double> v;
+  fromRest.at(small, 0.0008, v);
+  ASSERT_EQ(v[2], 2.0);
+  expectTangent(fromRest, small, 0.0008, "non-associated apex");
+}
+
+// With no increment yet (a step's prediction) after a plastic step, the tangent is the
+// continuum elastic-plastic one: the one-sided derivative along continued loading.
+TEST(DruckerPrager, PredictionTangentIsTheContinuumOne) {
+  const std::vector<std::pair<const char*, DruckerPragerParameters>> laws = {
+      {"linear", linear(50, 0.05)},
+      {"parabolic", parabolic(1.6)},
+      {"non-associated", parabolic(1.6, false, 0.05)},
+  };
+  for (const auto& [name, P] : laws) {
+    SCOPED_TRACE(name);
+    DruckerPrager law(P, PlaneHypothesis::Axisymmetric);
+    Point point(law);
+    Eigen::Matrix2d e = diag(0.001, -0.004);
+    e(0, 1) = e(1, 0) = 0.0007;
+    const double ezz = 0.001;
+    std::vector<double> v;
+    auto out = point.at(e, ezz, v);
+    ASSERT_EQ(v[2], 1.0);
+    point.accept(e, ezz, out, v);
+    const auto rest = point.at(e, ezz, v);
+    EXPECT_NEAR(v[0], point.variables[0], 1e-15);  // no increment: no plastic flow (to rounding)
+    // Continue loading along the same direction.
+    const double h = 1e-7;
+    const auto ahead = point.at(e * (1 + h), ezz * (1 + h), v, false);
+    ASSERT_EQ(v[2], 1.0);
+    const Eigen::Vector4d de(h * e(0, 0), h * e(1, 1), h * ezz, 2 * h * e(0, 1));
+    const Eigen::Vector4d predicted = rest.tangent * de;
+    const Eigen::Vector4d actual(ahead.stress(0, 0) - out.stress(0, 0), ahead.stress(1, 1) - out.stress(1, 1),
+                                 ahead.stressZZ - out.stressZZ, ahead.stress(0, 1) - out.stress(0, 1));
+    EXPECT_LE((predicted - actual).cwiseAbs().maxCoeff(), 1e-5 * actual.cwiseAbs().maxCoeff())
+        << predicted.transpose() << "\n" << actual.transpose();
+  }
 }
 
 TEST(DruckerPrager, NonAssociatedTangentIsUnsymmetric) {
@@ -320,6 +363,15 @@ TEST(DruckerPrager, RefusesWhatCodeAsterRefuses) {
   auto noUltimate = linear();
   noUltimate.ultimateStrain = 0;
   EXPECT_THROW(DruckerPrager(noUltimate, PlaneHypothesis::PlaneStrain), Error);
+}
+
+// DRUCK_PRAG_N_A's dilatancy vanishes at P_ULTM: a hydrostatic extension too large for
+// it to reach the apex has no return (the driver then cuts the step).
+TEST(DruckerPrager, ApexOutOfReachOfTheNonAssociatedFlowIsRefused) {
+  DruckerPrager law(parabolic(1.6, false, 0.05), PlaneHypothesis::Axisymmetric);
+  Point point(law);
+  std::vector<double> v;
+  EXPECT_THROW(point.at(diag(0.01, 0.01), 0.01, v), Error);
 }
 
 // The element with a non-symmetric law assembles its whole matrix: K = df/du by
