@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "../support/square_mesh.hpp"
@@ -375,47 +376,49 @@ TEST(DruckerPrager, ApexOutOfReachOfTheNonAssociatedFlowIsRefused) {
 }
 
 // The element with a non-symmetric law assembles its whole matrix: K = df/du by
-// central differences of the internal force, from a plastic accepted state.
+// central differences of the internal force, from a plastic accepted state (PETIT,
+// and GROT_GDEP with its geometric stiffness).
 TEST(DruckerPrager, ElementMatrixOfTheNonAssociatedLawIsTheExactDerivative) {
-  for (auto hypothesis : {PlaneHypothesis::PlaneStrain, PlaneHypothesis::Axisymmetric}) {
-    SCOPED_TRACE(planeHypothesisName(hypothesis));
-    auto law = std::make_shared<const DruckerPrager>(parabolic(1.6, false, 0.05), hypothesis);
-    PlaneElement<CellType::QUAD4, BehaviourLaw> element(std::shared_ptr<const BehaviourLaw>(law),
-                                                        Kinematics::SmallStrain);
-    using E = PlaneElement<CellType::QUAD4, BehaviourLaw>;
-    E::Coords X;
-    X << 1.0, 0.0, 2.0, 0.1, 2.1, 1.0, 0.9, 1.2;
-    E::Vector un, u;
-    un << 0, 0, 0.002, 0.0002, 0.0022, -0.004, 0.0003, -0.0035;
-    u = un;
-    u(5) -= 0.001;
-    u(7) -= 0.0008;
-    const int points = element.gaussPointCount();
-    std::vector<double> stress(4 * points), variables(3 * points), newVariables(3 * points);
-    element.gaussStresses(X, un, stress.data());
-    ElementHistory history;
-    history.displacement = un.data();
-    history.stress = stress.data();
-    history.variables = variables.data();  // the natural state's: the step from un is plastic
-    E::Vector f;
-    E::Matrix K;
-    element.internalForce(X, u, history, newVariables.data(), &f, &K);
-    int plastic = 0;
-    for (int q = 0; q < points; ++q) plastic += newVariables[3 * q + 2] == 1.0;
-    EXPECT_GT(plastic, 0);
-    E::Matrix fd;
-    const double h = 1e-9;
-    for (int j = 0; j < E::dofs; ++j) {
-      E::Vector up = u, um = u, fp, fm;
-      up(j) += h;
-      um(j) -= h;
-      element.internalForce(X, up, history, newVariables.data(), &fp, nullptr);
-      element.internalForce(X, um, history, newVariables.data(), &fm, nullptr);
-      fd.col(j) = (fp - fm) / (2 * h);
+  for (auto kinematics : {Kinematics::SmallStrain, Kinematics::GreenLagrange})
+    for (auto hypothesis : {PlaneHypothesis::PlaneStrain, PlaneHypothesis::Axisymmetric}) {
+      SCOPED_TRACE(std::string(planeHypothesisName(hypothesis)) +
+                   (kinematics == Kinematics::SmallStrain ? " PETIT" : " GROT_GDEP"));
+      auto law = std::make_shared<const DruckerPrager>(parabolic(1.6, false, 0.05), hypothesis);
+      PlaneElement<CellType::QUAD4, BehaviourLaw> element(std::shared_ptr<const BehaviourLaw>(law), kinematics);
+      using E = PlaneElement<CellType::QUAD4, BehaviourLaw>;
+      E::Coords X;
+      X << 1.0, 0.0, 2.0, 0.1, 2.1, 1.0, 0.9, 1.2;
+      E::Vector un, u;
+      un << 0, 0, 0.002, 0.0002, 0.0022, -0.004, 0.0003, -0.0035;
+      u = un;
+      u(5) -= 0.001;
+      u(7) -= 0.0008;
+      const int points = element.gaussPointCount();
+      std::vector<double> stress(4 * points), variables(3 * points), newVariables(3 * points);
+      element.gaussStresses(X, un, stress.data());
+      ElementHistory history;
+      history.displacement = un.data();
+      history.stress = stress.data();
+      history.variables = variables.data();  // the natural state's: the step from un is plastic
+      E::Vector f;
+      E::Matrix K;
+      element.internalForce(X, u, history, newVariables.data(), &f, &K);
+      int plastic = 0;
+      for (int q = 0; q < points; ++q) plastic += newVariables[3 * q + 2] == 1.0;
+      EXPECT_GT(plastic, 0);
+      E::Matrix fd;
+      const double h = 1e-9;
+      for (int j = 0; j < E::dofs; ++j) {
+        E::Vector up = u, um = u, fp, fm;
+        up(j) += h;
+        um(j) -= h;
+        element.internalForce(X, up, history, newVariables.data(), &fp, nullptr);
+        element.internalForce(X, um, history, newVariables.data(), &fm, nullptr);
+        fd.col(j) = (fp - fm) / (2 * h);
+      }
+      EXPECT_LE((K - fd).cwiseAbs().maxCoeff(), 1e-5 * K.cwiseAbs().maxCoeff()) << K << "\n\n" << fd;
+      EXPECT_GT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-6 * K.cwiseAbs().maxCoeff());
     }
-    EXPECT_LE((K - fd).cwiseAbs().maxCoeff(), 1e-5 * K.cwiseAbs().maxCoeff()) << K << "\n\n" << fd;
-    EXPECT_GT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-6 * K.cwiseAbs().maxCoeff());
-  }
 }
 
 // A small non-associated study through the driver: the system says its tangent is
