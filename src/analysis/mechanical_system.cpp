@@ -95,6 +95,7 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
       if (!slot) slot = std::make_shared<mechanics::IsotropicElasticity>(mat->E, mat->NU, m.modelisation(k));
       law = slot;
     }
+    if (!law->symmetricTangent()) symmetricLaws_ = false;
     const auto key = std::make_tuple(static_cast<int>(mesh.cellType(c)), law.get(),
                                      static_cast<int>(problem_.kinematics[k]));
     auto it = cache.find(key);

@@ -87,9 +87,10 @@ class MechanicalSystem {
   void internalForces(const Eigen::VectorXd& U, Eigen::VectorXd& fint) const;
 
   // K is exactly symmetric whatever U: every element matrix is (its kernel mirrors one
-  // triangle), and the assembly adds the same element values in the same order into (i, j)
-  // and (j, i). Only follower pressures add an unsymmetric term.
-  bool symmetricTangent() const { return pressureEdges_.empty(); }
+  // triangle when the law's tangent is symmetric), and the assembly adds the same element
+  // values in the same order into (i, j) and (j, i). Follower pressures and the laws with
+  // a non-symmetric tangent (mechanics::BehaviourLaw::symmetricTangent) make it unsymmetric.
+  bool symmetricTangent() const { return pressureEdges_.empty() && symmetricLaws_; }
 
   // Imposed displacements at t: (dof, value), each DOF once (the last load wins).
   std::vector<std::pair<int, double>> imposed(double t) const;
@@ -182,6 +183,7 @@ class MechanicalSystem {
   static constexpr int kChunkCells = 32;
   std::vector<std::vector<int>> chunkColours_;
   std::vector<Edge> pressureEdges_;
+  bool symmetricLaws_ = true;  // every law's tangent is symmetric
   std::vector<std::string> relationOrigins_;  // per relation of the loads, in their order
   // Dead loads independent of time, computed once: F(t) = factor(t) * F0.
   std::vector<Eigen::VectorXd> constantDeadLoads_;  // per problem_.loads entry, empty if time dependent

@@ -1,6 +1,6 @@
 // DEFI_MATERIAU: the data of a material's behaviours (ELAS, ECRO_LINE, TRACTION,
-// PRAGER, ELAS_HYPER, LEMAITRE, VISC_ENDO). Each relation checks its own parameters when STAT_NON_LINE
-// builds it (model/behaviour.hpp); here only what each keyword alone requires.
+// PRAGER, ELAS_HYPER, VISC_DRUC_PRAG, LEMAITRE, VISC_ENDO, DRUCK_PRAGER). Each relation
+// checks its own parameters when STAT_NON_LINE builds it (model/behaviour.hpp); here only what each keyword alone requires.
 #include "commands/function_concepts.hpp"
 #include "commands/model_concepts.hpp"
 #include "core/error.hpp"
@@ -83,6 +83,18 @@ ConceptPtr defiMateriau(const Keywords& k, Session& session, ConceptPtr) {
   if (k.has("VISC_ENDO")) {
     const auto& endo = k.factor("VISC_ENDO").front();
     m->viscEndo = model::ViscousDamageData{endo.real("SY"), endo.real("R_D"), endo.real("A_D")};
+  }
+  if (k.has("DRUCK_PRAGER")) {
+    const auto& dp = k.factor("DRUCK_PRAGER").front();
+    model::DruckerPragerData d;
+    d.alpha = dp.real("ALPHA");
+    d.yield = dp.real("SY");
+    d.ultimateStrain = dp.real("P_ULTM");
+    d.parabolic = dp.text("ECROUISSAGE") == "PARABOLIQUE";
+    if (d.parabolic) d.ultimateYield = dp.real("SY_ULTM");
+    else d.slope = dp.real("H");
+    d.dilatancy = dp.real("DILAT");
+    m->druckerPrager = d;
   }
   return std::make_shared<MaterialConcept>(m);
 }

@@ -38,9 +38,10 @@
 namespace aster::mechanics {
 
 // dS/dE in Voigt order: strains (E11, E22, E33, 2 E12) -> stresses (S11, S22,
-// S33, S12), 3 the out-of-plane direction. The element assembles one triangle of
-// its matrix and mirrors it, so a law's tangent must be symmetric (hyperelastic,
-// associated flow).
+// S33, S12), 3 the out-of-plane direction. For a law whose tangent is symmetric
+// (hyperelastic, associated flow) the element assembles one triangle of its matrix
+// and mirrors it; a law says otherwise through symmetricTangent() (non-associated
+// flow), and the element then assembles the whole matrix.
 using VoigtTangent = Eigen::Matrix4d;
 // Voigt indices.
 enum VoigtIndex { kXX = 0, kYY = 1, kZZ = 2, kXY = 3 };
@@ -79,6 +80,8 @@ class BehaviourLaw {
   virtual int internalVariableCount() const = 0;
   // Their names (code_aster's NOM_VARI: EPSPEQ, INDIPLAS, ...), internalVariableCount() of them.
   virtual std::vector<std::string> internalVariableNames() const { return {}; }
+  // Whether the tangent is symmetric whatever the state (false: non-associated flow).
+  virtual bool symmetricTangent() const { return true; }
   // Throws aster::Error for a state the law cannot integrate (the step is then cut).
   virtual void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const = 0;
 };

@@ -8,6 +8,8 @@
 // checks).
 #pragma once
 #include <cmath>
+#include <type_traits>
+
 #include <Eigen/Core>
 
 #include "fem/isoparametric.hpp"
@@ -73,6 +75,14 @@ void integrateLaw(const Law& law, Kinematics kinematics, const typename fem::Cel
   law.integrate(in, out, withTangent);
 }
 
+// Whether the element assembles its whole matrix (the law's tangent is not
+// symmetric) instead of one triangle mirrored; the inlined elasticity always mirrors.
+template <class Law>
+bool assemblesWholeMatrix(const Law& law) {
+  if constexpr (std::is_same_v<Law, BehaviourLaw>) return !law.symmetricTangent();
+  else return false;
+}
+
 // The material stiffness of an isotropic tangent: with g_a the gradient of N_a and
 // h_a = F g_a, the 2x2 block of nodes a, b (index notation, i, k in-plane) is
 //   K_ab(i,k) += lambda' h_ai h_bk + mu ((F F^T)_ik g_a.g_b + h_bi h_ak) + geo_ab delta_ik,
@@ -80,7 +90,8 @@ void integrateLaw(const Law& law, Kinematics kinematics, const typename fem::Cel
 // blocks b >= a: a third of the flops of B^T D B with 16 x 3 matrices.
 template <int nodes, class Matrix>
 void addStiffness(const IsotropicTangent& D, double w, const Eigen::Matrix2d& F,
-                  const Eigen::Matrix<double, nodes, 2>& G, const Eigen::Matrix<double, nodes, 2>& GS, Matrix& K) {
+                  const Eigen::Matrix<double, nodes, 2>& G, const Eigen::Matrix<double, nodes, 2>& GS, Matrix& K,
+                  bool /*whole: never, the tangent is symmetric*/ = false) {
   const double lambda = w * D.lambda, mu = w * D.mu;
   const Eigen::Matrix<double, 2, nodes> h = F.lazyProduct(G.transpose());
   const Eigen::Matrix2d FFt = mu * F * F.transpose();
@@ -95,14 +106,16 @@ void addStiffness(const IsotropicTangent& D, double w, const Eigen::Matrix2d& F,
     }
 }
 
-// Any symmetric tangent (Voigt), in the plane: its in-plane part D (xx, yy, xy;
+// Any tangent (Voigt), in the plane: its in-plane part D (xx, yy, xy;
 // the zz strain of D_PLAN is fixed, that of C_PLAN condensed by the law):
 // K_ab += B_a^T (w D) B_b + geo_ab I, with the variation of the strain for node a,
 // direction i (Voigt, 2 E12 last)
-//   B_a(:, i) = (F_i1 g_a1, F_i2 g_a2, F_i1 g_a2 + F_i2 g_a1).
+//   B_a(:, i) = (F_i1 g_a1, F_i2 g_a2, F_i1 g_a2 + F_i2 g_a1),
+// for the blocks b >= a (a symmetric tangent) or, with whole, every block.
 template <int nodes, class Matrix>
 void addStiffness(const VoigtTangent& tangent, double w, const Eigen::Matrix2d& F,
-                  const Eigen::Matrix<double, nodes, 2>& G, const Eigen::Matrix<double, nodes, 2>& GS, Matrix& K) {
+                  const Eigen::Matrix<double, nodes, 2>& G, const Eigen::Matrix<double, nodes, 2>& GS, Matrix& K,
+                  bool whole = false) {
   constexpr int inPlane[3] = {kXX, kYY, kXY};
   Eigen::Matrix3d D;
   for (int i = 0; i < 3; ++i)
@@ -116,7 +129,7 @@ void addStiffness(const VoigtTangent& tangent, double w, const Eigen::Matrix2d& 
     }
   const Eigen::Matrix<double, 3, 2 * nodes> DB = (w * D) * B;
   for (int b = 0; b < nodes; ++b)
-    for (int a = 0; a <= b; ++a) {
+    for (int a = 0; a < (whole ? nodes : b + 1); ++a) {
       const double geo = GS(a, 0) * G(b, 0) + GS(a, 1) * G(b, 1);
       K.template block<2, 2>(2 * a, 2 * b) +=
           B.template middleCols<2>(2 * a).transpose() * DB.template middleCols<2>(2 * b);
@@ -133,6 +146,7 @@ void internalForce(const fem::ShapeTable<T>& table, const Law& law, Kinematics k
   if (f) f->setZero();
   if (K) K->setZero();
   const bool geometric = kinematics == Kinematics::GreenLagrange;
+  const bool whole = K && assemblesWholeMatrix(law);
   typename fem::Cell<T>::Gradients G;
   for (int q = 0; q < table.size(); ++q) {
     const double w = pointGradients<T>(table, X, q, G);
@@ -148,10 +162,10 @@ void internalForce(const fem::ShapeTable<T>& table, const Law& law, Kinematics k
     if (K) {
       const Eigen::Matrix<double, nodes, 2> GS = geometric ? Eigen::Matrix<double, nodes, 2>(G * wS)
                                                            : Eigen::Matrix<double, nodes, 2>::Zero();
-      addStiffness<nodes>(response.tangent, w, F, G, GS, *K);
+      addStiffness<nodes>(response.tangent, w, F, G, GS, *K, whole);
     }
   }
-  if (K) K->template triangularView<Eigen::StrictlyLower>() = K->transpose();
+  if (K && !whole) K->template triangularView<Eigen::StrictlyLower>() = K->transpose();
 }
 
 // The 4 stress values of a point: the law's measure (S in GROT_GDEP), or with
@@ -255,6 +269,7 @@ void internalForceAxisymmetric(const fem::ShapeTable<T>& table, const Law& law, 
   if (f) f->setZero();
   if (K) K->setZero();
   const bool geometric = kinematics == Kinematics::GreenLagrange;
+  const bool whole = K && assemblesWholeMatrix(law);
   typename fem::Cell<T>::Gradients G;
   Eigen::Matrix<double, 4, 2 * nodes> B;
   for (int q = 0; q < table.size(); ++q) {
@@ -286,7 +301,7 @@ void internalForceAxisymmetric(const fem::ShapeTable<T>& table, const Law& law, 
       const Eigen::Matrix<double, 4, 2 * nodes> DB = (wr * response.tangent) * B;
       const Eigen::Matrix<double, nodes, 2> GS = G * wS;
       for (int b = 0; b < nodes; ++b)
-        for (int a = 0; a <= b; ++a) {
+        for (int a = 0; a < (whole ? nodes : b + 1); ++a) {
           K->template block<2, 2>(2 * a, 2 * b) +=
               B.template middleCols<2>(2 * a).transpose() * DB.template middleCols<2>(2 * b);
           if (!geometric) continue;
@@ -296,7 +311,7 @@ void internalForceAxisymmetric(const fem::ShapeTable<T>& table, const Law& law, 
         }
     }
   }
-  if (K) K->template triangularView<Eigen::StrictlyLower>() = K->transpose();
+  if (K && !whole) K->template triangularView<Eigen::StrictlyLower>() = K->transpose();
 }
 
 template <CellType T, class Law, class Vector>

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "mechanics/drucker_prager.hpp"
 #include "mechanics/hyperelasticity.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
 #include "mechanics/visc_endo_lemaitre.hpp"
@@ -34,6 +35,8 @@ const RelationRules* rulesOf(const std::string& relation) {
       {"ELAS_HYPER", {"GROT_GDEP"}, false},
       {"VISC_DRUC_PRAG", {"PETIT"}, true, true},
       {"VISC_ENDO_LEMA", {"PETIT"}, true, true},
+      {"DRUCK_PRAGER", {"PETIT", "GROT_GDEP"}, true},
+      {"DRUCK_PRAG_N_A", {"PETIT", "GROT_GDEP"}, true},
   };
   for (const auto& r : rules)
     if (relation == r.name) return &r;
@@ -77,6 +80,23 @@ std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation
     p.maxIterations = settings.maxIterations;
     p.tolerance = settings.tolerance;
     return std::make_shared<mechanics::ViscEndoLemaitre>(p, hypothesis);
+  }
+  if (relation == "DRUCK_PRAGER" || relation == "DRUCK_PRAG_N_A") {
+    needs(m.druckerPrager.has_value(), "DRUCK_PRAGER");
+    const DruckerPragerData& d = *m.druckerPrager;
+    mechanics::DruckerPragerParameters p;
+    p.young = m.E;
+    p.poisson = m.NU;
+    p.alpha = d.alpha;
+    p.yield = d.yield;
+    p.ultimateStrain = d.ultimateStrain;
+    p.hardening = d.parabolic ? mechanics::DruckerPragerParameters::Hardening::Parabolic
+                              : mechanics::DruckerPragerParameters::Hardening::Linear;
+    p.slope = d.slope;
+    p.ultimateYield = d.ultimateYield;
+    p.associated = relation == "DRUCK_PRAGER";
+    p.dilatancy = d.dilatancy;
+    return std::make_shared<mechanics::DruckerPrager>(p, hypothesis);
   }
   mechanics::VonMisesParameters p;
   if (relation == "VMIS_ISOT_LINE") {

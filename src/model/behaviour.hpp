@@ -37,7 +37,8 @@ struct BehaviourSite {
 class BehaviourFactory {
  public:
   // The law of `relation` (ELAS, VMIS_ISOT_LINE, VMIS_ISOT_TRAC, VMIS_CINE_LINE,
-  // VMIS_ECMI_LINE, VMIS_ECMI_TRAC, ELAS_HYPER, VISC_ENDO_LEMA) at `site`. Throws aster::Error naming
+  // VMIS_ECMI_LINE, VMIS_ECMI_TRAC, ELAS_HYPER, VISC_DRUC_PRAG, VISC_ENDO_LEMA, DRUCK_PRAGER,
+  // DRUCK_PRAG_N_A) at `site`. Throws aster::Error naming
   // the relation, the material and the cell when the material lacks a keyword the
   // relation needs, or the DEFORMATION or the modelisation is not one it allows.
   std::shared_ptr<const mechanics::BehaviourLaw> law(const std::string& relation, const BehaviourSite& site,

@@ -1,5 +1,5 @@
-// DEFI_MATERIAU's data (ELAS, ECRO_LINE, TRACTION, PRAGER, ELAS_HYPER, LEMAITRE,
-// VISC_ENDO) and
+// DEFI_MATERIAU's data (ELAS, ECRO_LINE, TRACTION, PRAGER, ELAS_HYPER, VISC_DRUC_PRAG,
+// LEMAITRE, VISC_ENDO, DRUCK_PRAGER) and
 // AFFE_MATERIAU's assignment of materials to cells. The laws are built from it
 // by model/behaviour.hpp.
 #pragma once
@@ -41,6 +41,15 @@ struct ViscousDamageData {
   double aD = 0.0;     // A_D
 };
 
+// DRUCK_PRAGER: the yield function and hardening of the Drucker-Prager laws.
+struct DruckerPragerData {
+  double alpha = 0.0, yield = 0.0, ultimateStrain = 0.0;  // ALPHA, SY, P_ULTM
+  bool parabolic = false;                                 // ECROUISSAGE='PARABOLIQUE' (else LINEAIRE)
+  double slope = 0.0;                                     // H (LINEAIRE)
+  double ultimateYield = 0.0;                             // SY_ULTM (PARABOLIQUE)
+  double dilatancy = 0.0;                                 // DILAT
+};
+
 // A material of DEFI_MATERIAU: its keywords that were given.
 struct ElasticMaterial {
   bool hasElas = true;  // ELAS given (E, NU, RHO below are ELAS's)
@@ -56,6 +65,7 @@ struct ElasticMaterial {
   std::optional<mechanics::ViscDruckerPragerMaterial> viscDrucPrag;  // VISC_DRUC_PRAG
   std::optional<LemaitreData> lemaitre;              // LEMAITRE
   std::optional<ViscousDamageData> viscEndo;         // VISC_ENDO
+  std::optional<DruckerPragerData> druckerPrager;    // DRUCK_PRAGER
 };
 
 using MaterialPtr = std::shared_ptr<const ElasticMaterial>;
