@@ -313,8 +313,17 @@ ConceptPtr testResu(const Keywords& k, Session& session, ConceptPtr) {
       continue;
     }
     ResultConcept::requireNotExcluded(inst, name);
+    // A cell beside the node of a nodal field says no more than the node (code_aster's
+    // studies write MAILLE there): accepted when it holds the node.
+    const int node = occ.has("MAILLE") ? designatedNode(occ, model.mesh()) : -1;
+    if (node >= 0) {
+      const auto nodes = model.mesh().cellNodes(model.mesh().cellIndex(occ.text("MAILLE")));
+      if (std::find(nodes.begin(), nodes.end(), node) == nodes.end())
+        throw Error(occ.path + ": MAILLE " + occ.text("MAILLE") + " does not hold the node " +
+                    model.mesh().nodeName(node) + " of this nodal field");
+    }
     for (const char* key : {"GROUP_MA", "MAILLE", "POINT", "SOUS_POINT"})
-      if (occ.has(key))
+      if (occ.has(key) && !(node >= 0 && std::string(key) == "MAILLE"))
         throw Error(occ.path + ": " + key + " designates a cell or a point of a field on cells; NOM_CHAM='" + name +
                     "' is a nodal field: give NOEUD or GROUP_NO");
     designationColumns(occ, false, false, true, what);
