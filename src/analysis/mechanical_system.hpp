@@ -90,6 +90,8 @@ class MechanicalSystem {
   // triangle), and the assembly adds the same element values in the same order into (i, j)
   // and (j, i). Only follower pressures add an unsymmetric term.
   bool symmetricTangent() const { return pressureEdges_.empty(); }
+  // Whether a cell's law depends on the time step (mechanics::BehaviourLaw::rateDependent).
+  bool rateDependent() const { return rateDependent_; }
 
   // Imposed displacements at t: (dof, value), each DOF once (the last load wins).
   std::vector<std::pair<int, double>> imposed(double t) const;
@@ -182,6 +184,7 @@ class MechanicalSystem {
   static constexpr int kChunkCells = 32;
   std::vector<std::vector<int>> chunkColours_;
   std::vector<Edge> pressureEdges_;
+  bool rateDependent_ = false;
   std::vector<std::string> relationOrigins_;  // per relation of the loads, in their order
   // Dead loads independent of time, computed once: F(t) = factor(t) * F0.
   std::vector<Eigen::VectorXd> constantDeadLoads_;  // per problem_.loads entry, empty if time dependent

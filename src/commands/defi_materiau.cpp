@@ -69,6 +69,10 @@ ConceptPtr defiMateriau(const Keywords& k, Session& session, ConceptPtr) {
     h.rho = hyper.real("RHO");
     m->hyper = h;
   }
+  if (k.has("LEMAITRE")) {
+    const auto& lemaitre = k.factor("LEMAITRE").front();
+    m->lemaitre = model::LemaitreData{lemaitre.real("N"), lemaitre.real("UN_SUR_K"), lemaitre.real("UN_SUR_M")};
+  }
   return std::make_shared<MaterialConcept>(m);
 }
 

@@ -79,6 +79,9 @@ class BehaviourLaw {
   virtual int internalVariableCount() const = 0;
   // Their names (code_aster's NOM_VARI: EPSPEQ, INDIPLAS, ...), internalVariableCount() of them.
   virtual std::vector<std::string> internalVariableNames() const { return {}; }
+  // Whether the response depends on the time step (the viscous laws): at an unchanged
+  // strain, the stress then still moves with time.
+  virtual bool rateDependent() const { return false; }
   // Throws aster::Error for a state the law cannot integrate (the step is then cut).
   virtual void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const = 0;
 };

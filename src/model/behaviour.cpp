@@ -7,6 +7,7 @@
 #include "core/number_format.hpp"
 #include "mechanics/hyperelasticity.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
+#include "mechanics/lemaitre_viscoplasticity.hpp"
 #include "mechanics/von_mises_plasticity.hpp"
 
 namespace aster::model {
@@ -30,6 +31,8 @@ const RelationRules* rulesOf(const std::string& relation) {
       {"VMIS_ECMI_LINE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"VMIS_ECMI_TRAC", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true},
       {"ELAS_HYPER", {"GROT_GDEP"}, false},
+      {"LEMAITRE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true, true},
+      {"NORTON", {"PETIT", "GDEF_LOG"}, true, true},
   };
   for (const auto& r : rules)
     if (relation == r.name) return &r;
@@ -41,6 +44,21 @@ std::string words(const std::vector<const char*>& list) {
   for (std::size_t i = 0; i < list.size(); ++i)
     out += std::string(i == 0 ? "" : i + 1 == list.size() ? " or " : ", ") + "'" + list[i] + "'";
   return out;
+}
+
+// ALGO_INTE: the integration code_aster allows for the relation, as aster-lite has it.
+void checkAlgorithm(const std::string& relation, const std::string& algorithm) {
+  if (relation == "NORTON") {
+    if (algorithm != "NEWTON_PERT")
+      throw Error("RELATION='NORTON': ALGO_INTE='" + (algorithm.empty() ? std::string("RUNGE_KUTTA") : algorithm) +
+                  "'" + (algorithm.empty() ? " (code_aster's default)" : "") +
+                  " is not available: give ALGO_INTE='NEWTON_PERT', the implicit theta scheme");
+    return;
+  }
+  const char* only = relation == "LEMAITRE" ? "DEKKER" : "ANALYTIQUE";
+  if (!algorithm.empty() && algorithm != only)
+    throw Error("RELATION='" + relation + "': ALGO_INTE='" + algorithm + "' is not available; this relation takes ALGO_INTE='" +
+                only + "'");
 }
 
 std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation, const BehaviourSite& site,
@@ -60,6 +78,16 @@ std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation
   }
   needs(m.hasElas, "ELAS");
   if (relation == "ELAS") return std::make_shared<mechanics::IsotropicElasticity>(m.E, m.NU, hypothesis);
+  if (relation == "LEMAITRE" || relation == "NORTON") {
+    needs(m.lemaitre.has_value(), "LEMAITRE");
+    const LemaitreData& l = *m.lemaitre;
+    auto lp = relation == "LEMAITRE"
+                  ? mechanics::lemaitreParameters(m.E, m.NU, l.n, l.inverseK, l.inverseM, settings.theta)
+                  : mechanics::nortonParameters(m.E, m.NU, l.n, l.inverseK, l.inverseM, settings.theta);
+    lp.maxIterations = settings.maxIterations;
+    lp.tolerance = settings.tolerance;
+    return std::make_shared<mechanics::LemaitreViscoplasticity>(lp, hypothesis);
+  }
   mechanics::VonMisesParameters p;
   if (relation == "VMIS_ISOT_LINE") {
     needs(m.ecroLine.has_value(), "ECRO_LINE");
@@ -101,10 +129,11 @@ std::shared_ptr<const mechanics::BehaviourLaw> BehaviourFactory::law(const std::
   if (!rules.rateDependent && settings.theta != 1.0)
     throw Error("COMPORTEMENT: PARM_THETA=" + format::asterValue(settings.theta) + ": RELATION='" + relation +
                 "' does not depend on time and is integrated by the implicit scheme alone (PARM_THETA=1)");
-  // The integration settings matter to the von Mises laws only; ELAS and ELAS_HYPER share one law.
-  const bool vonMises = relation.compare(0, 5, "VMIS_") == 0;
+  checkAlgorithm(relation, settings.algorithm);
+  // The integration settings matter to the laws with local iterations only; ELAS and ELAS_HYPER share one law.
+  const bool iterative = relation != "ELAS" && relation != "ELAS_HYPER";
   const Key key{site.material, static_cast<int>(site.modelisation), relation, static_cast<int>(site.kinematics),
-                vonMises ? settings.maxIterations : 0, vonMises ? settings.tolerance : 0.0, settings.theta};
+                iterative ? settings.maxIterations : 0, iterative ? settings.tolerance : 0.0, settings.theta};
   auto& slot = laws_[key];
   if (!slot) {
     try {

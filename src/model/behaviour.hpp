@@ -17,11 +17,12 @@
 namespace aster::model {
 
 // COMPORTEMENT's ITER_INTE_MAXI and RESI_INTE_RELA (the laws' local iterations) and
-// PARM_THETA (the time integration of the rate-dependent laws).
+// PARM_THETA (the time integration of the rate-dependent laws), ALGO_INTE.
 struct IntegrationSettings {
   int maxIterations = 20;
   double tolerance = 1e-6;
   double theta = 1.0;
+  std::string algorithm;  // ALGO_INTE, "" when not given (the relation's default)
 };
 
 // What a relation is applied to: the cell (for messages) and its data.
@@ -37,7 +38,7 @@ struct BehaviourSite {
 class BehaviourFactory {
  public:
   // The law of `relation` (ELAS, VMIS_ISOT_LINE, VMIS_ISOT_TRAC, VMIS_CINE_LINE,
-  // VMIS_ECMI_LINE, VMIS_ECMI_TRAC, ELAS_HYPER) at `site`. Throws aster::Error naming
+  // VMIS_ECMI_LINE, VMIS_ECMI_TRAC, ELAS_HYPER, LEMAITRE, NORTON) at `site`. Throws aster::Error naming
   // the relation, the material and the cell when the material lacks a keyword the
   // relation needs, or the DEFORMATION or the modelisation is not one it allows.
   std::shared_ptr<const mechanics::BehaviourLaw> law(const std::string& relation, const BehaviourSite& site,

@@ -25,6 +25,13 @@ struct HyperelasticData {
   double rho = 0.0;
 };
 
+// LEMAITRE: the viscous flow of LEMAITRE and NORTON, dp/dt = (s_eq / (K p^(1/M)))^N.
+struct LemaitreData {
+  double n = 0.0;         // N
+  double inverseK = 0.0;  // UN_SUR_K
+  double inverseM = 0.0;  // UN_SUR_M
+};
+
 // A material of DEFI_MATERIAU: its keywords that were given.
 struct ElasticMaterial {
   bool hasElas = true;  // ELAS given (E, NU, RHO below are ELAS's)
@@ -37,6 +44,7 @@ struct ElasticMaterial {
   std::optional<mechanics::TractionCurve> traction;  // TRACTION
   std::optional<double> prager;                      // PRAGER's C
   std::optional<HyperelasticData> hyper;             // ELAS_HYPER
+  std::optional<LemaitreData> lemaitre;              // LEMAITRE
 };
 
 using MaterialPtr = std::shared_ptr<const ElasticMaterial>;
