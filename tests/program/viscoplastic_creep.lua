@@ -73,4 +73,42 @@ for _, relation in ipairs({{RELATION = 'NORTON', ALGO_INTE = 'NEWTON_PERT'}, {RE
         ORDRE_GRANDEUR = S, CRITERE = 'ABSOLU', PRECISION = 1e-8 * S}),
   }}
 end
+
+-- Restarts: LEMAITRE with strain hardening (UN_SUR_M = 0.3), PARM_THETA = 0.5, D_PLAN, the
+-- load ramped up then held; a run stopped at INST 360 and continued with ETAT_INIT
+-- EVOL_NOLI (reuse), and one started from the fields of INST 360 (DEPL, SIGM, VARI), give
+-- at INST 3600 what the uninterrupted run gives (the creep rate depends on p: restarting
+-- without the variables would not).
+MATH = DEFI_MATERIAU{ELAS = {E = E, NU = NU}, LEMAITRE = {N = N, UN_SUR_K = 1 / K, UN_SUR_M = 0.3}}
+CMH = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MATH}}
+MOP = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
+BCP = AFFE_CHAR_MECA{MODELE = MOP, DDL_IMPO = {{GROUP_MA = 'BAS', DY = 0.0}, {GROUP_MA = 'GAUCHE', DX = 0.0}}}
+PULLP = AFFE_CHAR_MECA{MODELE = MOP, FORCE_CONTOUR = {GROUP_MA = 'HAUT', FY = S}}
+RAMP = DEFI_FONCTION{NOM_PARA = 'INST', VALE = {0.0, 0.0, 10.0, 1.0, 3600.0, 1.0}}
+LH = DEFI_LIST_REEL{VALE = {0.0, 5.0, 10.0, 60.0, 360.0, 1000.0, 3600.0}}
+local function run(extra)
+  local k = {MODELE = MOP, CHAM_MATER = CMH, EXCIT = {{CHARGE = BCP}, {CHARGE = PULLP, FONC_MULT = RAMP}},
+             COMPORTEMENT = {RELATION = 'LEMAITRE', PARM_THETA = 0.5, ITER_INTE_MAXI = 1000},
+             INCREMENT = {LIST_INST = LH}}
+  for key, value in pairs(extra or {}) do k[key] = value end
+  return STAT_NON_LINE(k)
+end
+local RH = run()
+local RS = run({INCREMENT = {LIST_INST = LH, INST_FIN = 360.0}})
+RS = run({reuse = RS, ETAT_INIT = {EVOL_NOLI = RS}})
+local U2 = CREA_CHAMP{TYPE_CHAM = 'NOEU_DEPL_R', OPERATION = 'EXTR', RESULTAT = RH, NOM_CHAM = 'DEPL', INST = 360.0}
+local S2 = CREA_CHAMP{TYPE_CHAM = 'ELGA_SIEF_R', OPERATION = 'EXTR', RESULTAT = RH, NOM_CHAM = 'SIEF_ELGA', INST = 360.0}
+local V2 = CREA_CHAMP{TYPE_CHAM = 'ELGA_VARI_R', OPERATION = 'EXTR', RESULTAT = RH, NOM_CHAM = 'VARI_ELGA', INST = 360.0}
+local RF = run({ETAT_INIT = {DEPL = U2, SIGM = S2, VARI = V2}, INCREMENT = {LIST_INST = LH, INST_INIT = 360.0}})
+if not (RH:getField('VARI_ELGA', 3600.0):getValues()[1] > RH:getField('VARI_ELGA', 360.0):getValues()[1]) then
+  error('LEMAITRE: no creep between INST 360 and 3600')
+end
+for _, name in ipairs({'DEPL', 'SIEF_ELGA', 'VARI_ELGA'}) do
+  local a = RH:getField(name, 3600.0):getValues()
+  for which, other in pairs({['EVOL_NOLI restart'] = RS, ['field restart'] = RF}) do
+    local b = other:getField(name, 3600.0):getValues()
+    if #a ~= #b then error(which .. ': ' .. name .. ' sizes differ') end
+    for i = 1, #a do near(b[i], a[i], math.max(1.0, math.abs(a[i])), which .. ' ' .. name .. ' value ' .. i) end
+  end
+end
 print('VISCOPLASTIC CREEP: every check passed')
