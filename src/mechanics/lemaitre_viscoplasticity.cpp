@@ -1,6 +1,7 @@
 #include "mechanics/lemaitre_viscoplasticity.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -136,7 +137,111 @@ double LemaitreViscoplasticity::root(const Residual& F, double q) const {
   }
 }
 
+void LemaitreViscoplasticity::integrateRungeKutta(const LawInput& in, LawOutput<VoigtTangent>& out,
+                                                  bool withTangent) const {
+  static constexpr double kNatural[7] = {0, 0, 0, 0, 0, 0, 0};
+  const double* vn = in.previousVariables ? in.previousVariables : kNatural;
+  const double dt = in.timeIncrement;
+  if (dt < 0) throw Error("NORTON: negative time step " + format::shortest(dt) + " (the instants must increase)");
+  const bool planeStrain = hypothesis_ == PlaneHypothesis::PlaneStrain;
+  // Strains in code_aster's vector form (xx, yy, zz, sqrt 2 xy): the error norm is its.
+  const double r2 = std::sqrt(2.0);
+  const double end[4] = {in.strain(0, 0), in.strain(1, 1), planeStrain ? 0.0 : in.strainZZ, r2 * in.strain(0, 1)};
+  const double de[4] = {in.strainIncrement(0, 0), in.strainIncrement(1, 1),
+                        planeStrain ? 0.0 : in.strainIncrementZZ, r2 * in.strainIncrement(0, 1)};
+  const double lambda = bulk_ - 2 * mu_ / 3;
+  // y: the viscous strain (vector form) and p.
+  using State = std::array<double, 5>;
+  State y = {vn[0], vn[1], vn[2], r2 * vn[3], vn[6]};
+  auto stressAt = [&](double x, const State& state, double sigma[4]) {
+    const double fraction = dt > 0 ? x / dt : 1.0;
+    double e[4];
+    for (int i = 0; i < 4; ++i) e[i] = end[i] - de[i] + de[i] * fraction - state[i];
+    const double tr = e[0] + e[1] + e[2];
+    for (int i = 0; i < 4; ++i) sigma[i] = 2 * mu_ * e[i] + (i < 3 ? lambda * tr : 0.0);
+  };
+  auto rateAt = [&](double x, const State& state) {
+    double sigma[4];
+    stressAt(x, state, sigma);
+    const double mean = (sigma[0] + sigma[1] + sigma[2]) / 3;
+    double s[4];
+    for (int i = 0; i < 4; ++i) s[i] = sigma[i] - (i < 3 ? mean : 0.0);
+    const double q = std::sqrt(1.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + s[3] * s[3]));
+    State r = {0, 0, 0, 0, 0};
+    if (q > std::numeric_limits<double>::min()) {
+      const double dp = std::pow(q * parameters_.inverseK, parameters_.exponent);
+      if (dp > 1e-10) {
+        for (int i = 0; i < 4; ++i) r[i] = 1.5 * dp * s[i] / q;
+        r[4] = dp;
+      }
+    }
+    return r;
+  };
+  if (dt > 0 && parameters_.inverseK > 0) {
+    const double eps = parameters_.tolerance;
+    State scale;
+    for (int i = 0; i < 5; ++i) scale[i] = std::max(1e-4, std::fabs(y[i]));
+    double x = 0, h = dt;
+    bool last = false, reuse = false;
+    State a{}, start{};
+    for (;;) {
+      if (!reuse) {
+        if (x + h >= dt) {
+          h = dt - x;
+          last = true;
+        }
+        start = y;
+        a = rateAt(x, y);
+      }
+      State y1, error;
+      for (int i = 0; i < 5; ++i) y1[i] = start[i] + a[i] * h;
+      const State f = rateAt(x + h, y1);
+      double w = 0;
+      for (int i = 0; i < 5; ++i) {
+        error[i] = (f[i] - a[i]) * 0.5 * h;
+        w = std::max(w, std::fabs(error[i]) / scale[i]);
+      }
+      if (w <= eps) {
+        for (int i = 0; i < 5; ++i) y[i] = y1[i] + error[i];
+        x += h;
+        reuse = false;
+        if (last) break;
+        h = std::min(dt, h * std::pow(std::max(w / eps, 1e-5), -0.2) * 0.9);
+      } else {
+        last = false;
+        reuse = true;
+        h *= std::pow(std::min(w / eps, 1e8), -0.2) * 0.9;
+        if (h / dt < std::numeric_limits<double>::epsilon())
+          throw Error("NORTON (RUNGE_KUTTA): the sub-step fell below the rounding of the time step " +
+                      format::shortest(dt));
+      }
+    }
+  }
+  double sigma[4];
+  stressAt(dt, y, sigma);
+  out.stress << sigma[0], sigma[3] / r2, sigma[3] / r2, sigma[1];
+  out.stressZZ = sigma[2];
+  out.strainZZ = planeStrain ? 0.0 : in.strainZZ;
+  if (out.variables) {
+    for (int i = 0; i < 3; ++i) out.variables[i] = y[i];
+    out.variables[3] = y[3] / r2;
+    out.variables[4] = vn[4];
+    out.variables[5] = vn[5];
+    out.variables[6] = y[4];
+  }
+  if (!withTangent) return;
+  VoigtTangent& D = out.tangent;
+  D.setZero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) D(i, j) = lambda + (i == j ? 2 * mu_ : 0.0);
+  D(kXY, kXY) = mu_;
+}
+
 void LemaitreViscoplasticity::integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const {
+  if (parameters_.rungeKutta) {
+    integrateRungeKutta(in, out, withTangent);
+    return;
+  }
   static constexpr double kNatural[7] = {0, 0, 0, 0, 0, 0, 0};
   const double* vn = in.previousVariables ? in.previousVariables : kNatural;
   const double* sn = in.previousStress;

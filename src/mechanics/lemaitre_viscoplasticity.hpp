@@ -26,7 +26,20 @@
 // Internal variables per Gauss point, as code_aster names them:
 //   LEMAITRE: V1 EPSPEQ (p), V2 VIDE (0)
 //   NORTON:   V1-V6 EPSPXX, EPSPYY, EPSPZZ, EPSPXY, EPSPXZ, EPSPYZ (the viscoplastic
-//             strain, tensor components), V7 VIDE (0)
+//             strain, tensor components), V7 VIDE (0 by the theta scheme; the
+//             cumulated p by Runge-Kutta, which integrates it)
+//
+// NORTON with ALGO_INTE='RUNGE_KUTTA' (code_aster's default) integrates instead the
+// rates of y = (eps_v, p) explicitly, the strain varying linearly over the step, by
+// Heun's method (second order) with an embedded first order error estimate and an
+// adaptive sub-step, as code_aster (R5.03.14): the stress at (x, y) is Hooke's of
+// eps_n + x/dt de - eps_v; from y and the rate a = y'(x, y), y1 = y + h a and
+// y2 = y1 + h/2 (y'(x + h, y1) - a) with the error e = y2 - y1; the sub-step is
+// accepted when max_i |e_i| / max(1e-4, |y_i(0)|) <= RESI_INTE_RELA (shear
+// components as code_aster's, times sqrt 2), and the next h is h 0.9 w^(-1/5),
+// w = max(error / RESI_INTE_RELA, 1e-5) (at most dt), or after a rejection
+// w = min(error / RESI_INTE_RELA, 1e8). A rate below 1e-10 counts as none. Its
+// tangent is the elastic one.
 #pragma once
 #include <string>
 #include <vector>
@@ -46,6 +59,7 @@ struct LemaitreParameters {
   int maxIterations = 20;  // ITER_INTE_MAXI: the scalar equation's iterations
   double tolerance = 1e-6; // RESI_INTE_RELA: |F| below it ends them (in stress units, as code_aster)
   LemaitreVariables variables = LemaitreVariables::Lemaitre;
+  bool rungeKutta = false;  // NORTON's ALGO_INTE='RUNGE_KUTTA' (else the theta scheme)
 };
 
 // The parameters of LEMAITRE and NORTON from DEFI_MATERIAU (ELAS's E, NU; LEMAITRE's
@@ -75,6 +89,8 @@ class LemaitreViscoplasticity final : public BehaviourLaw {
  private:
   // The viscous rate g(x, p) = (x / K)^N p^(-N/M) and its partial derivatives.
   void rate(double x, double p, double& g, double& dgdx, double& dgdp) const;
+  // NORTON by Runge-Kutta: the same outputs as integrate().
+  void integrateRungeKutta(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const;
   // code_aster's DEKKER: the root of the increasing F in ]0, q[ by regula falsi from
   // the bracket [0, q (1 - 1e-12)], the midpoint every third trial, until |F| < RESI_INTE_RELA.
   template <class Residual>

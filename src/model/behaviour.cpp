@@ -49,10 +49,9 @@ std::string words(const std::vector<const char*>& list) {
 // ALGO_INTE: the integration code_aster allows for the relation, as aster-lite has it.
 void checkAlgorithm(const std::string& relation, const std::string& algorithm) {
   if (relation == "NORTON") {
-    if (algorithm != "NEWTON_PERT")
-      throw Error("RELATION='NORTON': ALGO_INTE='" + (algorithm.empty() ? std::string("RUNGE_KUTTA") : algorithm) +
-                  "'" + (algorithm.empty() ? " (code_aster's default)" : "") +
-                  " is not available: give ALGO_INTE='NEWTON_PERT', the implicit theta scheme");
+    if (!algorithm.empty() && algorithm != "NEWTON_PERT" && algorithm != "RUNGE_KUTTA")
+      throw Error("RELATION='NORTON': ALGO_INTE='" + algorithm +
+                  "' is not available; this relation takes ALGO_INTE='RUNGE_KUTTA' (the default) or 'NEWTON_PERT'");
     return;
   }
   const char* only = relation == "LEMAITRE" ? "DEKKER" : "ANALYTIQUE";
@@ -86,6 +85,7 @@ std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation
                   : mechanics::nortonParameters(m.E, m.NU, l.n, l.inverseK, l.inverseM, settings.theta);
     lp.maxIterations = settings.maxIterations;
     lp.tolerance = settings.tolerance;
+    lp.rungeKutta = relation == "NORTON" && settings.algorithm != "NEWTON_PERT";
     return std::make_shared<mechanics::LemaitreViscoplasticity>(lp, hypothesis);
   }
   mechanics::VonMisesParameters p;

@@ -72,7 +72,7 @@ void uniaxialStep(Point& point, double target, bool stressControl, double dt) {
   if (!stressControl) e(1, 1) = target;
   std::vector<double> v;
   LawOutput<VoigtTangent> out;
-  for (int it = 0; it < 100; ++it) {
+  for (int it = 0; it < 2000; ++it) {  // (Runge-Kutta's elastic tangent converges linearly)
     out = point.at(e, ett, dt, v);
     // Unknowns: the lateral strain (e_rr = e_tt), and e_yy under stress control.
     const double r1 = out.stress(0, 0);
@@ -200,6 +200,57 @@ TEST(Lemaitre, NortonRelaxationConvergesAtTheOrderOfTheScheme) {
     for (int i = 0; i + 1 < 3; ++i)
       EXPECT_NEAR(std::log2(errors[i] / errors[i + 1]), order, 0.15) << "theta " << theta << " errors " << errors[i];
     EXPECT_LT(errors.back(), theta == 1.0 ? 0.02 : 1e-3);
+  }
+}
+
+// NORTON by Runge-Kutta (code_aster's default): the creep and the relaxation above, to
+// the tolerance of its error control whatever the step.
+LemaitreParameters rungeKutta(LemaitreParameters p, double tolerance) {
+  p.rungeKutta = true;
+  p.tolerance = tolerance;
+  return p;
+}
+
+TEST(Lemaitre, NortonRungeKuttaCreepAndRelaxationMeetTheClosedForms) {
+  {
+    const double n = 4.5, K = 500, s = 150;
+    const LemaitreViscoplasticity law(rungeKutta(nortonParameters(kE, kNu, n, 1 / K, 0, 1), 1e-8),
+                                      PlaneHypothesis::Axisymmetric);
+    Point point(law);
+    uniaxialStep(point, s, true, 0.0);
+    double t = 0;
+    for (double dt : {0.5, 1.0, 2.0}) {
+      uniaxialStep(point, s, true, dt);
+      t += dt;
+      const double creep = std::pow(s / K, n) * t;
+      EXPECT_NEAR(variable(point, "EPSPYY"), creep, 1e-6 * creep) << "t " << t;
+      EXPECT_NEAR(variable(point, "VIDE"), creep, 1e-6 * creep) << "t " << t;  // the cumulated p
+      EXPECT_NEAR(point.strain(1, 1), s / kE + creep, 1e-6 * creep);
+    }
+  }
+  // Relaxation at a fixed strain (D_PLAN, e_xx = e, the others 0: the scheme's linear
+  // strain path is then exact): the deviator keeps its direction and its equivalent q
+  // follows dq/dt = -3 mu (q/K)^N, q^(1-N) = q0^(1-N) + (N - 1) 3 mu t / K^N, q0 = 2 mu e;
+  // s_xx - s_yy = q (the mean stress stays).
+  const double n = 3, K = 100, e = 1e-3, T = 3e-4;
+  const double mu = kE / (2 * (1 + kNu)), q0 = 2 * mu * e;
+  const double exact = std::pow(std::pow(q0, 1 - n) + (n - 1) * 3 * mu * T / std::pow(K, n), -1 / (n - 1));
+  ASSERT_LT(exact, 0.6 * q0);
+  const LemaitreViscoplasticity law(rungeKutta(nortonParameters(kE, kNu, n, 1 / K, 0, 1), 1e-9),
+                                    PlaneHypothesis::PlaneStrain);
+  for (int steps : {1, 4}) {
+    Point point(law);
+    Eigen::Matrix2d strain = Eigen::Matrix2d::Zero();
+    strain(0, 0) = e;
+    std::vector<double> v;
+    point.accept(strain, 0, point.at(strain, 0, 0.0, v), v);
+    const double mean = (point.stress[0] + point.stress[1] + point.stress[2]) / 3;
+    for (int k = 0; k < steps; ++k) {
+      const auto out = point.at(strain, 0, T / steps, v);
+      point.accept(strain, 0, out, v);
+    }
+    EXPECT_NEAR(point.stress[0] - point.stress[1], exact, 1e-6 * exact) << steps << " steps";
+    EXPECT_NEAR((point.stress[0] + point.stress[1] + point.stress[2]) / 3, mean, 1e-9 * q0);
   }
 }
 

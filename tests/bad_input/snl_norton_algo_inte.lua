@@ -1,6 +1,6 @@
 -- expect-exit: 2
--- expect-output: <F> <STAT_NON_LINE> .*snl_norton_runge_kutta\.lua:12: RELATION='NORTON': ALGO_INTE='RUNGE_KUTTA' \(code_aster's default\) is not available: give ALGO_INTE='NEWTON_PERT', the implicit theta scheme
--- NORTON's default integration in code_aster, the explicit Runge-Kutta scheme, is not available: refused by name, never replaced silently.
+-- expect-output: <F> <STAT_NON_LINE> .*snl_norton_algo_inte\.lua:12: RELATION='NORTON': ALGO_INTE='DEKKER' is not available; this relation takes ALGO_INTE='RUNGE_KUTTA' \(the default\) or 'NEWTON_PERT'
+-- An integration the relation does not have is refused by name.
 DEBUT{}
 DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
 MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
@@ -10,5 +10,5 @@ CM = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MAT1}}
 CH = AFFE_CHAR_MECA{MODELE = MO, DDL_IMPO = {GROUP_MA = 'BAS', DX = 0.0, DY = 0.0}}
 L1 = DEFI_LIST_REEL{VALE = {0.0, 1.0}}
 R = STAT_NON_LINE{MODELE = MO, CHAM_MATER = CM, EXCIT = {CHARGE = CH}, INCREMENT = {LIST_INST = L1},
-                  COMPORTEMENT = {RELATION = 'NORTON'}}
+                  COMPORTEMENT = {RELATION = 'NORTON', ALGO_INTE = 'DEKKER'}}
 FIN{}
