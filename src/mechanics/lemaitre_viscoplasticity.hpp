@@ -57,7 +57,8 @@ struct LemaitreParameters {
   double inverseM = 0;     // UN_SUR_M (0: Norton)
   double theta = 1;        // PARM_THETA
   int maxIterations = 20;  // ITER_INTE_MAXI: the scalar equation's iterations
-  double tolerance = 1e-6; // RESI_INTE_RELA: |F| below it ends them (in stress units, as code_aster)
+  double tolerance = 1e-6; // RESI_INTE_RELA: |F| below it ends them (in stress units, as code_aster);
+                           // Runge-Kutta: the error accepted in a sub-step
   LemaitreVariables variables = LemaitreVariables::Lemaitre;
   bool rungeKutta = false;  // NORTON's ALGO_INTE='RUNGE_KUTTA' (else the theta scheme)
 };
