@@ -209,6 +209,15 @@ void StaticNonlinear::chooseMatrix(const Step& step, const std::vector<double>& 
 // The residual at U (and the tangent, as chosen), and the elastic matrix the first time it serves.
 void StaticNonlinear::assembleIteration(const Eigen::VectorXd& U, const Step& step, Iteration& it) {
   assemble(U, step.t1, it.assembleTangent && !it.residualFirst);
+  // The prediction from the accepted state (tangent or elastic matrix) balances its internal
+  // forces, as code_aster's: with a viscous law they are not those of the state integrated
+  // over the step at the same displacement (the relaxed ones).
+  if (it.k == 0 && settings_.prediction != Prediction::Extrapolated && system_.rateDependent() && U == step.Ustart) {
+    Eigen::VectorXd accepted;
+    system_.internalForces(U, accepted);
+    r_.head(system_.dofCount()) += accepted - fint_;
+    fint_ = accepted;
+  }
   if (it.elastic && Kelastic_.size() == 0) {
     Eigen::VectorXd zero = Eigen::VectorXd::Zero(n_);
     Eigen::VectorXd keepFint = fint_, keepFext = fext_, keepR = r_;

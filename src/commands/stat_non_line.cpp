@@ -132,6 +132,7 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
         integration.maxIterations = static_cast<int>(occ->integer("ITER_INTE_MAXI"));
         integration.tolerance = occ->real("RESI_INTE_RELA");
         integration.theta = occ->real("PARM_THETA");
+        if (occ->has("ALGO_INTE")) integration.algorithm = occ->text("ALGO_INTE");
       }
       problem.relations.push_back(factory.law(occ ? occ->text("RELATION") : "ELAS", site, integration));
     }

@@ -82,6 +82,9 @@ class BehaviourLaw {
   virtual std::vector<std::string> internalVariableNames() const { return {}; }
   // Whether the tangent is symmetric whatever the state (false: non-associated flow).
   virtual bool symmetricTangent() const { return true; }
+  // Whether the response depends on the time step (the viscous laws): at an unchanged
+  // strain, the stress then still moves with time.
+  virtual bool rateDependent() const { return false; }
   // Throws aster::Error for a state the law cannot integrate (the step is then cut).
   virtual void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const = 0;
 };

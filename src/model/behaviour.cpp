@@ -9,6 +9,7 @@
 #include "mechanics/hyperelasticity.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
 #include "mechanics/visc_endo_lemaitre.hpp"
+#include "mechanics/lemaitre_viscoplasticity.hpp"
 #include "mechanics/von_mises_plasticity.hpp"
 #include "mechanics/visc_drucker_prager.hpp"
 
@@ -37,6 +38,8 @@ const RelationRules* rulesOf(const std::string& relation) {
       {"VISC_ENDO_LEMA", {"PETIT"}, true, true},
       {"DRUCK_PRAGER", {"PETIT", "GROT_GDEP"}, true},
       {"DRUCK_PRAG_N_A", {"PETIT", "GROT_GDEP"}, true},
+      {"LEMAITRE", {"PETIT", "GROT_GDEP", "GDEF_LOG"}, true, true},
+      {"NORTON", {"PETIT", "GDEF_LOG"}, true, true},
   };
   for (const auto& r : rules)
     if (relation == r.name) return &r;
@@ -48,6 +51,23 @@ std::string words(const std::vector<const char*>& list) {
   for (std::size_t i = 0; i < list.size(); ++i)
     out += std::string(i == 0 ? "" : i + 1 == list.size() ? " or " : ", ") + "'" + list[i] + "'";
   return out;
+}
+
+// ALGO_INTE: the integration code_aster allows for the relation, as aster-lite has it.
+void checkAlgorithm(const std::string& relation, const std::string& algorithm) {
+  if (algorithm.empty()) return;
+  // code_aster's ALGO_INTE per relation (its Behaviours catalogue), the default first.
+  static const std::map<std::string, std::vector<const char*>> algorithms = {
+      {"NORTON", {"RUNGE_KUTTA", "NEWTON_PERT"}},
+      {"LEMAITRE", {"DEKKER"}},
+      {"VISC_ENDO_LEMA", {"SECANTE", "BRENT", "DEKKER"}},
+      {"VISC_DRUC_PRAG", {"SECANTE", "BRENT"}},
+  };
+  const auto found = algorithms.find(relation);
+  const std::vector<const char*> allowed = found != algorithms.end() ? found->second : std::vector<const char*>{"ANALYTIQUE"};
+  if (std::find_if(allowed.begin(), allowed.end(), [&](const char* a) { return algorithm == a; }) == allowed.end())
+    throw Error("RELATION='" + relation + "': ALGO_INTE='" + algorithm + "' is not available; this relation takes ALGO_INTE=" +
+                words(allowed));
 }
 
 std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation, const BehaviourSite& site,
@@ -98,6 +118,17 @@ std::shared_ptr<const mechanics::BehaviourLaw> build(const std::string& relation
     p.dilatancy = d.dilatancy;
     return std::make_shared<mechanics::DruckerPrager>(p, hypothesis);
   }
+  if (relation == "LEMAITRE" || relation == "NORTON") {
+    needs(m.lemaitre.has_value(), "LEMAITRE");
+    const LemaitreData& l = *m.lemaitre;
+    auto lp = relation == "LEMAITRE"
+                  ? mechanics::lemaitreParameters(m.E, m.NU, l.n, l.unSurK, l.unSurM, settings.theta)
+                  : mechanics::nortonParameters(m.E, m.NU, l.n, l.unSurK, l.unSurM, settings.theta);
+    lp.maxIterations = settings.maxIterations;
+    lp.tolerance = settings.tolerance;
+    lp.rungeKutta = relation == "NORTON" && settings.algorithm != "NEWTON_PERT";
+    return std::make_shared<mechanics::LemaitreViscoplasticity>(lp, hypothesis);
+  }
   mechanics::VonMisesParameters p;
   if (relation == "VMIS_ISOT_LINE") {
     needs(m.ecroLine.has_value(), "ECRO_LINE");
@@ -139,10 +170,12 @@ std::shared_ptr<const mechanics::BehaviourLaw> BehaviourFactory::law(const std::
   if (!rules.rateDependent && settings.theta != 1.0)
     throw Error("COMPORTEMENT: PARM_THETA=" + format::asterValue(settings.theta) + ": RELATION='" + relation +
                 "' does not depend on time and is integrated by the implicit scheme alone (PARM_THETA=1)");
-  // The integration settings matter to the laws that iterate; ELAS and ELAS_HYPER share one law.
+  checkAlgorithm(relation, settings.algorithm);
+  // The integration settings matter to the laws with local iterations only; ELAS and ELAS_HYPER share one law.
   const bool iterates = relation != "ELAS" && relation != "ELAS_HYPER";
   const Key key{site.material, static_cast<int>(site.modelisation), relation, static_cast<int>(site.kinematics),
-                iterates ? settings.maxIterations : 0, iterates ? settings.tolerance : 0.0, settings.theta};
+                iterates ? settings.maxIterations : 0, iterates ? settings.tolerance : 0.0, settings.theta,
+                settings.algorithm};
   auto& slot = laws_[key];
   if (!slot) {
     try {

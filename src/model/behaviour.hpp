@@ -17,11 +17,12 @@
 namespace aster::model {
 
 // COMPORTEMENT's ITER_INTE_MAXI and RESI_INTE_RELA (the laws' local iterations) and
-// PARM_THETA (the time integration of the rate-dependent laws).
+// PARM_THETA (the time integration of the rate-dependent laws), ALGO_INTE.
 struct IntegrationSettings {
   int maxIterations = 20;
   double tolerance = 1e-6;
   double theta = 1.0;
+  std::string algorithm;  // ALGO_INTE, "" when not given (the relation's default)
 };
 
 // What a relation is applied to: the cell (for messages) and its data.
@@ -38,14 +39,14 @@ class BehaviourFactory {
  public:
   // The law of `relation` (ELAS, VMIS_ISOT_LINE, VMIS_ISOT_TRAC, VMIS_CINE_LINE,
   // VMIS_ECMI_LINE, VMIS_ECMI_TRAC, ELAS_HYPER, VISC_DRUC_PRAG, VISC_ENDO_LEMA, DRUCK_PRAGER,
-  // DRUCK_PRAG_N_A) at `site`. Throws aster::Error naming
+  // DRUCK_PRAG_N_A, LEMAITRE, NORTON) at `site`. Throws aster::Error naming
   // the relation, the material and the cell when the material lacks a keyword the
   // relation needs, or the DEFORMATION or the modelisation is not one it allows.
   std::shared_ptr<const mechanics::BehaviourLaw> law(const std::string& relation, const BehaviourSite& site,
                                                      const IntegrationSettings& settings);
 
  private:
-  using Key = std::tuple<const ElasticMaterial*, int, std::string, int, int, double, double>;
+  using Key = std::tuple<const ElasticMaterial*, int, std::string, int, int, double, double, std::string>;
   std::map<Key, std::shared_ptr<const mechanics::BehaviourLaw>> laws_;
 };
 

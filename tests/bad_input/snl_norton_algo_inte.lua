@@ -1,0 +1,14 @@
+-- expect-exit: 2
+-- expect-output: <F> <STAT_NON_LINE> .*snl_norton_algo_inte\.lua:12: RELATION='NORTON': ALGO_INTE='DEKKER' is not available; this relation takes ALGO_INTE='RUNGE_KUTTA' or 'NEWTON_PERT'
+-- An integration the relation does not have is refused by name.
+DEBUT{}
+DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
+MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}
+MO = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
+MAT1 = DEFI_MATERIAU{ELAS = {E = 1000.0, NU = 0.3}, LEMAITRE = {N = 3.0, UN_SUR_K = 0.01}}
+CM = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = MAT1}}
+CH = AFFE_CHAR_MECA{MODELE = MO, DDL_IMPO = {GROUP_MA = 'BAS', DX = 0.0, DY = 0.0}}
+L1 = DEFI_LIST_REEL{VALE = {0.0, 1.0}}
+R = STAT_NON_LINE{MODELE = MO, CHAM_MATER = CM, EXCIT = {CHARGE = CH}, INCREMENT = {LIST_INST = L1},
+                  COMPORTEMENT = {RELATION = 'NORTON', ALGO_INTE = 'DEKKER'}}
+FIN{}
