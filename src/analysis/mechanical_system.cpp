@@ -84,7 +84,7 @@ MechanicalSystem::MechanicalSystem(MechanicalProblem problem) : problem_(std::mo
     if (!problem_.relations.empty()) {
       law = problem_.relations[k];
       if (!law) throw Error("internal error: cell " + mesh.cellName(c) + " of the model has no behaviour law");
-      rateDependent_ = rateDependent_ || law->rateDependent();
+      predictsFromAcceptedState_ = predictsFromAcceptedState_ || law->predictsFromAcceptedState();
     } else {
       const model::ElasticMaterial* mat = problem_.materials ? problem_.materials->at(c) : nullptr;
       if (!mat)

@@ -91,8 +91,8 @@ class MechanicalSystem {
   // values in the same order into (i, j) and (j, i). Follower pressures and the laws with
   // a non-symmetric tangent (mechanics::BehaviourLaw::symmetricTangent) make it unsymmetric.
   bool symmetricTangent() const { return pressureEdges_.empty() && symmetricLaws_; }
-  // Whether a cell's law depends on the time step (mechanics::BehaviourLaw::rateDependent).
-  bool rateDependent() const { return rateDependent_; }
+  // Whether a cell's law predicts from the accepted state (mechanics::BehaviourLaw::predictsFromAcceptedState).
+  bool predictsFromAcceptedState() const { return predictsFromAcceptedState_; }
 
   // Imposed displacements at t: (dof, value), each DOF once (the last load wins).
   std::vector<std::pair<int, double>> imposed(double t) const;
@@ -186,7 +186,7 @@ class MechanicalSystem {
   std::vector<std::vector<int>> chunkColours_;
   std::vector<Edge> pressureEdges_;
   bool symmetricLaws_ = true;  // every law's tangent is symmetric
-  bool rateDependent_ = false;
+  bool predictsFromAcceptedState_ = false;
   std::vector<std::string> relationOrigins_;  // per relation of the loads, in their order
   // Dead loads independent of time, computed once: F(t) = factor(t) * F0.
   std::vector<Eigen::VectorXd> constantDeadLoads_;  // per problem_.loads entry, empty if time dependent

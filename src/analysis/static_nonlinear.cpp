@@ -212,7 +212,7 @@ void StaticNonlinear::assembleIteration(const Eigen::VectorXd& U, const Step& st
   // The prediction from the accepted state (tangent or elastic matrix) balances its internal
   // forces, as code_aster's: with a viscous law they are not those of the state integrated
   // over the step at the same displacement (the relaxed ones).
-  if (it.k == 0 && settings_.prediction != Prediction::Extrapolated && system_.rateDependent() && U == step.Ustart) {
+  if (it.k == 0 && settings_.prediction != Prediction::Extrapolated && system_.predictsFromAcceptedState() && U == step.Ustart) {
     Eigen::VectorXd accepted;
     system_.internalForces(U, accepted);
     r_.head(system_.dofCount()) += accepted - fint_;

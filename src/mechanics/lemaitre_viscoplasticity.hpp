@@ -80,7 +80,7 @@ class LemaitreViscoplasticity final : public BehaviourLaw {
   PlaneHypothesis hypothesis() const override { return hypothesis_; }
   int internalVariableCount() const override;
   std::vector<std::string> internalVariableNames() const override;
-  bool rateDependent() const override { return true; }
+  bool predictsFromAcceptedState() const override { return true; }
   // Throws aster::Error when the scalar equation does not converge in ITER_INTE_MAXI
   // iterations or the time step is negative (the driver then cuts the step).
   void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const override;

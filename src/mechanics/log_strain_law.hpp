@@ -38,7 +38,7 @@ class LogarithmicStrainLaw final : public BehaviourLaw {
   // The law's names (V1, V2, ... where it gives none), then TXX, TYY, TZZ, TXY, TXZ, TYZ.
   std::vector<std::string> internalVariableNames() const override;
   bool symmetricTangent() const override { return law_->symmetricTangent(); }
-  bool rateDependent() const override { return law_->rateDependent(); }
+  bool predictsFromAcceptedState() const override { return law_->predictsFromAcceptedState(); }
   // in.strain: E; out.stress: S; out.tangent: dS/dE.
   void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const override;
 

@@ -112,7 +112,7 @@ TEST(Lemaitre, NamesItsVariablesAsCodeAster) {
   const LemaitreViscoplasticity norton(nortonParameters(kE, kNu, 3, 0.01, 0, 1), PlaneHypothesis::Axisymmetric);
   EXPECT_EQ(norton.internalVariableNames(),
             (std::vector<std::string>{"EPSPXX", "EPSPYY", "EPSPZZ", "EPSPXY", "EPSPXZ", "EPSPYZ", "VIDE"}));
-  EXPECT_TRUE(norton.rateDependent());
+  EXPECT_TRUE(norton.predictsFromAcceptedState());
 }
 
 TEST(Lemaitre, RefusesParametersOutOfRange) {

@@ -52,7 +52,7 @@ TEST(LemaitreDriver, ThePredictionBalancesTheAcceptedState) {
   problem.kinematics.assign(model->cells().size(), Kinematics::SmallStrain);
   problem.relations.assign(model->cells().size(), law);
   analysis::MechanicalSystem system(problem);
-  EXPECT_TRUE(system.rateDependent());
+  EXPECT_TRUE(system.predictsFromAcceptedState());
 
   analysis::NewtonSettings settings;
   settings.resiGlobRela = 1e-12;
