@@ -44,11 +44,9 @@ int countOf(const mesh::Mesh& m, const std::vector<int>& cells, std::initializer
   return n;
 }
 
-ConceptPtr creaMaillage(const Keywords& k, Session& session, ConceptPtr reuse) {
+// reuse= is refused before this runs (reentrant='n' in the catalogue).
+ConceptPtr creaMaillage(const Keywords& k, Session& session, ConceptPtr) {
   const ConceptPtr source = k.conceptPtr("MAILLAGE");
-  if (reuse)
-    throw Error("reuse=: CREA_MAILLAGE makes a new mesh and leaves " + session.nameOf(*source) +
-                " unchanged; give the result another name");
   const mesh::Mesh& in = meshOf(source);
   using CT = mesh::CellType;
   std::string what;
