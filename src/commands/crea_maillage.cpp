@@ -37,6 +37,14 @@ std::vector<int> selectedCells(const mesh::Mesh& m, const Keywords& k) {
   return cells;
 }
 
+// code_aster converts 3D cells too; aster-lite refuses them rather than leave them linear.
+void refuseVolumes(const mesh::Mesh& m, const std::vector<int>& cells, const std::string& where) {
+  for (int c : cells)
+    if (mesh::topologicalDimension(m.cellType(c)) == 3)
+      throw Error(where + ": cell " + m.cellName(c) + " is a " + mesh::cellTypeName(m.cellType(c)) +
+                  "; aster-lite converts 1D and 2D cells only (SEG, TRIA, QUAD)");
+}
+
 int countOf(const mesh::Mesh& m, const std::vector<int>& cells, std::initializer_list<mesh::CellType> types) {
   int n = 0;
   for (int c : cells)
@@ -55,6 +63,7 @@ ConceptPtr creaMaillage(const Keywords& k, Session& session, ConceptPtr) {
   if (k.has("LINE_QUAD")) {
     const Keywords& f = k.factor("LINE_QUAD").front();
     const auto cells = selectedCells(in, f);
+    refuseVolumes(in, cells, "LINE_QUAD");
     if (countOf(in, cells, {CT::SEG2, CT::TRIA3, CT::QUAD4}) == 0)
       throw Error("LINE_QUAD: no linear cell (SEG2, TRIA3, QUAD4) among the cells given");
     try {
@@ -65,6 +74,7 @@ ConceptPtr creaMaillage(const Keywords& k, Session& session, ConceptPtr) {
     what = "LINE_QUAD";
   } else if (k.has("QUAD_LINE")) {
     const auto cells = selectedCells(in, k.factor("QUAD_LINE").front());
+    refuseVolumes(in, cells, "QUAD_LINE");
     if (countOf(in, cells, {CT::SEG3, CT::TRIA6, CT::TRIA7, CT::QUAD8, CT::QUAD9}) == 0)
       throw Error("QUAD_LINE: no quadratic cell (SEG3, TRIA6, TRIA7, QUAD8, QUAD9) among the cells given");
     out = mesh::quadraticToLinear(in, cells);
