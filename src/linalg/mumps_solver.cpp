@@ -210,17 +210,18 @@ void MumpsSolver::factorize(const SparseMatrix& A) {
   const SparseMatrix& M = compressedMatrix(A, storage);
   pattern_.requireSame(M, name());
   factorized_ = false;
+  bool unsymmetric = false;
   if (sym_ != 0 && !symmetricByConstruction_) {
     try {
       symmetry_->require(M, kSymmetryTolerance, name());
     } catch (const UnsymmetricMatrixError&) {
       if (options_.symmetry != "AUTO") throw;  // TYPE_RESOL said symmetric
-      start(0);  // unsymmetric from now on: a new instance, a new analysis
-      loadValues(M);
-      runAnalysis();
+      unsymmetric = true;
     }
   }
+  if (unsymmetric) start(0);  // LU from now on: a new instance, a new analysis
   loadValues(M);
+  if (unsymmetric) runAnalysis();
   runFactorization();
   factorized_ = true;
 }
