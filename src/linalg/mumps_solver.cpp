@@ -2,6 +2,7 @@
 
 #include <dmumps_c.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -61,6 +62,21 @@ std::string mumpsError(int code, int info2) {
 }
 
 bool workspaceShort(int code) { return code == -8 || code == -9 || code == -17 || code == -20; }
+
+// Whether every pair of unknowns is coupled in A or A^T: the graph is one clique. PORD (5.5)
+// ends the process (exit(-1) in orderMinPriority, "no valid number of stages in
+// multisector") on such a graph, from one unknown up: one element's matrix, say.
+bool denseGraph(const SparseMatrix& M) {
+  const long long n = M.cols();
+  if (2 * static_cast<long long>(M.nonZeros()) < n * (n + 1)) return false;  // too few entries to cover every pair
+  std::vector<char> coupled(static_cast<size_t>(n * n), 0);
+  for (int j = 0; j < n; ++j)
+    for (int k = M.outerIndexPtr()[j]; k < M.outerIndexPtr()[j + 1]; ++k) {
+      const int i = M.innerIndexPtr()[k];
+      coupled[static_cast<size_t>(i * n + j)] = coupled[static_cast<size_t>(j * n + i)] = 1;
+    }
+  return std::all_of(coupled.begin(), coupled.end(), [](char c) { return c != 0; });
+}
 
 }  // namespace
 
@@ -197,11 +213,17 @@ void MumpsSolver::runAnalysis() {
   h.id.irn = irn_.data();
   h.id.jcn = jcn_.data();
   h.id.a = values_.data();
+  // A dense matrix has no fill to reduce: every ordering is as good, and PORD cannot take it.
+  const bool densePord = ordering_ == "PORD" && denseGraph(matrix_);
+  if (densePord) h.icntl(7) = 0;
   h.run(1);
   if (h.infog(1) < 0) throw Error("MUMPS: analysis failed: " + mumpsError(h.infog(1), h.infog(2)));
   stats_.ordering = orderingName(h.infog(7));
-  if (ordering_ != "AUTO" && stats_.ordering != ordering_)
+  if (densePord) {
+    stats_.ordering += " (a dense matrix, which PORD cannot order)";
+  } else if (ordering_ != "AUTO" && stats_.ordering != ordering_) {
     throw Error("MUMPS: RENUM='" + ordering_ + "' asked, but the library ordered with " + stats_.ordering);
+  }
 }
 
 void MumpsSolver::factorize(const SparseMatrix& A) {

@@ -33,7 +33,9 @@ TEST_P(MumpsOrdering, SolvesSymmetricPositiveDefinite) {
   solver.setOrdering(GetParam());
   EXPECT_LT(solveKnown(solver, laplacian2d(15)), 1e-11);
   EXPECT_EQ(solver.symmetryMode(), 2);  // general symmetric, the lower triangle
-  if (GetParam() != "AUTO") EXPECT_EQ(solver.statistics().ordering, GetParam());
+  if (GetParam() != "AUTO") {
+    EXPECT_EQ(solver.statistics().ordering, GetParam());
+  }
   // L holds at least the lower triangle of A: 225 + 2*14*15 entries.
   EXPECT_GE(solver.statistics().factorNonzeros, 225 + 2 * 14 * 15);
   EXPECT_GT(solver.statistics().factorFlops, 0.0);
@@ -64,6 +66,20 @@ TEST_P(MumpsOrdering, SolvesUnsymmetric) {
 
 INSTANTIATE_TEST_SUITE_P(Renum, MumpsOrdering, ::testing::Values("AUTO", "AMD", "AMF", "QAMD", "PORD", "SCOTCH"),
                          [](const auto& info) { return info.param; });
+
+// PORD ends the process on a dense matrix (one element's stiffness; from one unknown up):
+// such a matrix, which no ordering can make sparser, is ordered by AMD.
+TEST(Mumps, PordIsNotGivenADenseMatrix) {
+  for (int n : {1, 2, 16}) {
+    Triplets t;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) t.emplace_back(i, j, i == j ? n + 1.0 : 1.0);  // diagonally dominant
+    MumpsSolver solver;
+    solver.setOrdering("PORD");
+    EXPECT_LT(solveKnown(solver, fromTriplets(n, t)), 1e-13) << n;
+    EXPECT_EQ(solver.statistics().ordering, "AMD (a dense matrix, which PORD cannot order)") << n;
+  }
+}
 
 TEST(Mumps, OrderingsOfOtherBuildsAreRefusedByName) {
   MumpsSolver solver;
