@@ -7,7 +7,7 @@
 // Also: the ordering and flops of the factorization, its rate (flops of one factorization
 // over the mean time of one; and over the mean time of those after the first, which also
 // gets the factor's memory from the system), and the rate of a dense dgemm with the BLAS linked.
-//   bench_svk_square [N ...] [--solver UMFPACK|CHOLMOD|KLU|EIGEN_LU] [--dgemm n] [--csv]
+//   bench_svk_square [N ...] [--solver MULT_FRONT|MUMPS|UMFPACK|CHOLMOD|KLU|EIGEN_LU] [--dgemm n] [--csv]
 #include <sys/resource.h>
 
 #include <algorithm>

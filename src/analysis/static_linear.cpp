@@ -20,6 +20,7 @@ StaticLinear::StaticLinear(const MechanicalSystem& system, LinearSettings settin
   solver_->setOrdering(settings_.renum);
   solver_->setFactorizationsPerAnalysis(1);  // one per stiffness, whatever the instants
   solver_->setSingularityDigits(settings_.nprec);
+  if (auto* mumps = dynamic_cast<linalg::MumpsSolver*>(solver_.get())) mumps->setOptions(settings_.mumps);
   solver_->setSymmetricByConstruction(system_.symmetricTangent());
 }
 

@@ -16,6 +16,7 @@
 #include "analysis/mechanical_system.hpp"
 #include "analysis/static_nonlinear.hpp"
 #include "linalg/linear_solver.hpp"
+#include "linalg/mumps_solver.hpp"
 
 namespace aster::analysis {
 
@@ -23,6 +24,7 @@ struct LinearSettings {
   std::string method = "MULT_FRONT";  // SOLVEUR/METHODE
   std::string renum = "AUTO";         // SOLVEUR/RENUM
   int nprec = 8;                      // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
+  linalg::MumpsOptions mumps;         // METHODE='MUMPS': its controls
 };
 
 struct LinearStatistics {

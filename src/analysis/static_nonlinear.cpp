@@ -40,6 +40,7 @@ StaticNonlinear::StaticNonlinear(MechanicalSystem& system, AdditionalTerms* term
   if (terms_) solver_->solver->setMultipliersFrom(system_.dofCount());
   solver_->solver->setOrdering(settings_.renum);
   solver_->solver->setSingularityDigits(settings_.nprec);
+  if (auto* mumps = dynamic_cast<linalg::MumpsSolver*>(solver_->solver.get())) mumps->setOptions(settings_.mumps);
   // Contact's terms keep the check: their symmetry is not exact by construction.
   solver_->solver->setSymmetricByConstruction(!terms_ && (system_.symmetricTangent() || settings_.symmetrize));
 }

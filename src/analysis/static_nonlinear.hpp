@@ -25,6 +25,7 @@
 #include "analysis/mechanical_system.hpp"
 #include "analysis/newton_observer.hpp"
 #include "linalg/linear_solver.hpp"
+#include "linalg/mumps_solver.hpp"
 
 namespace aster::analysis {
 
@@ -50,6 +51,7 @@ struct NewtonSettings {
   std::string method = "MULT_FRONT";
   std::string renum = "AUTO";  // SOLVEUR/RENUM
   int nprec = 8;               // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
+  linalg::MumpsOptions mumps;  // METHODE='MUMPS': its controls
   int subdPas = 4;     // SUBD_PAS
   int subdNiveau = 3;  // SUBD_NIVEAU (0: no cutting)
   bool subdAuto = false;    // SUBD_METHODE='AUTO' (step_cutting.hpp): no level limit

@@ -61,6 +61,7 @@ ConceptPtr mecaStatique(const Keywords& k, Session& session, ConceptPtr) {
   settings.method = choice.method;
   settings.renum = choice.renum;
   settings.nprec = choice.nprec;
+  settings.mumps = choice.mumps;
 
   analysis::MechanicalSystem system(problem);
   analysis::StaticLinear solver(system, settings);

@@ -1,14 +1,19 @@
 #include "commands/solver_choice.hpp"
 
+#include "core/error.hpp"
+
 namespace aster::lang {
 
 namespace {
 
-// MUMPS's orderings: the minimum degree family is AMD, the nested dissections METIS.
-std::string mumpsOrdering(const std::string& renum) {
-  if (renum == "AUTO") return "AUTO";
-  if (renum == "AMD" || renum == "AMF" || renum == "QAMD") return "AMD";
-  return "METIS";  // METIS, PORD, SCOTCH, PARMETIS, PTSCOTCH
+// code_aster's MUMPS orderings that Debian's sequential MUMPS does not have.
+void refuseMissingMumpsOrdering(const std::string& renum) {
+  if (renum == "METIS")
+    throw Error("SOLVEUR: RENUM='METIS' is not available with METHODE='MUMPS': Debian's sequential MUMPS is built "
+                "without METIS; its nested dissections are 'SCOTCH' and 'PORD' (or 'AUTO', 'AMD', 'AMF', 'QAMD')");
+  if (renum == "PARMETIS" || renum == "PTSCOTCH")
+    throw Error("SOLVEUR: RENUM='" + renum + "' is a parallel ordering of MUMPS over MPI processes; aster-lite's "
+                "MUMPS is sequential: use 'SCOTCH', 'PORD', 'AUTO', 'AMD', 'AMF' or 'QAMD'");
 }
 
 }  // namespace
@@ -18,8 +23,12 @@ SolverChoice readSolveur(const Keywords& solveur) {
   c.method = solveur.text("METHODE");
   c.renum = solveur.text("RENUM");
   if (c.method == "MUMPS") {
-    c.method = "MULT_FRONT";
-    c.renum = mumpsOrdering(c.renum);
+    refuseMissingMumpsOrdering(c.renum);
+    c.mumps.symmetry = solveur.text("TYPE_RESOL");
+    c.mumps.pivotPercent = static_cast<int>(solveur.integer("PCENT_PIVOT"));
+    c.mumps.preprocess = solveur.text("PRETRAITEMENTS") == "AUTO";
+    c.mumps.refinement = solveur.text("POSTTRAITEMENTS");
+    c.mumps.residualTolerance = solveur.real("RESI_RELA");
   } else if (c.method == "LDLT") {
     c.method = "MULT_FRONT";
     c.renum = "AUTO";  // RCMK, a profile ordering: MULT_FRONT's fills less

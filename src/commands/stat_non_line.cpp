@@ -167,6 +167,7 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   settings.method = choice.method;
   settings.renum = choice.renum;
   settings.nprec = choice.nprec;
+  settings.mumps = choice.mumps;
   if (k.has("RECH_LINEAIRE")) {
     const auto& rl = k.factor("RECH_LINEAIRE").front();
     auto& ls = settings.lineSearchSettings;

@@ -6,6 +6,7 @@
 #include "linalg/eigen_lu_solver.hpp"
 #include "linalg/klu_solver.hpp"
 #include "linalg/mult_front_solver.hpp"
+#include "linalg/mumps_solver.hpp"
 #include "linalg/umfpack_solver.hpp"
 
 namespace aster::linalg {
@@ -36,11 +37,12 @@ void LinearSolver::setOrdering(const std::string& renum) {
 }
 
 std::vector<std::string> linearSolverMethods() {
-  return {"MULT_FRONT", "UMFPACK", "CHOLMOD", "CHOLMOD_LDLT", "KLU", "EIGEN_LU"};
+  return {"MULT_FRONT", "MUMPS", "UMFPACK", "CHOLMOD", "CHOLMOD_LDLT", "KLU", "EIGEN_LU"};
 }
 
 std::unique_ptr<LinearSolver> makeLinearSolver(const std::string& methode) {
   if (methode == "MULT_FRONT") return std::make_unique<MultFrontSolver>();
+  if (methode == "MUMPS") return std::make_unique<MumpsSolver>();
   if (methode == "UMFPACK") return std::make_unique<UmfpackSolver>();
   if (methode == "CHOLMOD") return std::make_unique<CholmodSolver>(CholmodSolver::Mode::Cholesky);
   if (methode == "CHOLMOD_LDLT") return std::make_unique<CholmodSolver>(CholmodSolver::Mode::LDLT);

@@ -96,7 +96,7 @@ class LinearSolver {
 std::vector<std::string> linearSolverMethods();
 
 // 'MULT_FRONT' (the default: multifrontal, signed pivots, symmetric matrices; UMFPACK takes
-// over for others, mult_front_solver.hpp), 'UMFPACK', 'CHOLMOD' (supernodal LL^T, symmetric
+// over for others, mult_front_solver.hpp), 'MUMPS' (mumps_solver.hpp), 'UMFPACK', 'CHOLMOD' (supernodal LL^T, symmetric
 // positive definite only), 'CHOLMOD_LDLT' (simplicial LDL^T without pivoting, for symmetric
 // quasi-definite systems such as stiffness + Lagrange multipliers), 'KLU', 'EIGEN_LU'.
 // Throws aster::Error on an unknown name, listing the allowed ones.

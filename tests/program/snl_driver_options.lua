@@ -9,8 +9,8 @@
 -- default 10 its first expansion, rho = 3, takes the bar near its collapse (l = 0.12),
 -- where |f| is already below RESI_LINE_RELA |f(0)|, and Newton then stalls: f is no merit
 -- function there. DEFI_LIST_INST's SUBD_METHODE='AUTO' cuts the step that fails with
--- ITER_GLOB_MAXI = 7; SOLVEUR METHODE='MUMPS' (with MUMPS's own keywords) and 'LDLT' solve
--- as MULT_FRONT. Each gives the closed-form stretch.
+-- ITER_GLOB_MAXI = 7; SOLVEUR METHODE='MUMPS' (Debian's MUMPS, with its own keywords) and
+-- 'LDLT' solve too. Each gives the closed-form stretch.
 local P = 20.0
 local function near(x, y, tol, what)
   if not (math.abs(x - y) <= tol) then error(string.format('%s: %.17g, expected %.17g', what, x, y), 2) end
