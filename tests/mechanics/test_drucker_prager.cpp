@@ -118,7 +118,9 @@ TriaxialCheck triaxial(const DruckerPragerParameters& parameters, double Pc, Inv
     const double p = pOf((1 - kA) * delta - 3 * kA * Pc);
     EXPECT_NEAR(point.variables[0], p, 1e-10 * std::max(p, 1e-3)) << "step " << step;
     EXPECT_NEAR(point.variables[1], 3 * kA * p, 1e-10 * std::max(p, 1e-3));
-    if (p > 1e-9) EXPECT_EQ(point.variables[2], 1.0);
+    if (p > 1e-9) {
+      EXPECT_EQ(point.variables[2], 1.0);
+    }
     EXPECT_NEAR(eyy, (syy + 2 * kNu * Pc) / kE + (kA - 1) * p, 1e-12) << "step " << step;
     check.maxPlasticStrain = p;
   }
