@@ -1,6 +1,7 @@
 """The files the QUAD8 benchmarks write and read: the mesh for aster-lite (code_aster's
 .mail format), the mesh part of CalculiX's .inp, and a nodal value from CalculiX's .frd.
-Imported by plate_hole.py and thick_cylinder.py (run from this folder's scripts).
+Imported by plate_hole.py, thick_cylinder.py and thick_cylinder_creep.py (run from this
+folder's scripts).
 """
 import sys
 

@@ -12,7 +12,8 @@ keeps its boundary conditions on every new node.
 
 The mesh is a structured grid of QUAD8 cells, NT around the quarter circle and
 NR across the wall, uniform in angle and radius; every node lies on its exact
-circle. Unknowns: about 6 NT NR (NT = 256, NR = 256: 0.4 M).
+circle. Unknowns: about 6 NT NR (NT = 256, NR = 256: 0.4 M). thick_cylinder_creep.py
+writes the same mesh (write_mesh) for the creep benchmark.
 
 usage: thick_cylinder.py NT NR OUTPUT.mail OUTPUT.inp
        thick_cylinder.py --frd-ux RESULTS.frd OUTPUT.inp
@@ -30,14 +31,10 @@ P_MAX = 0.9 * LIMIT
 INCREMENTS = 20
 
 
-def main():
-    if len(sys.argv) == 4 and sys.argv[1] == "--frd-ux":
-        print("%.7g" % frd_value(sys.argv[2], sys.argv[3], "DISP"))
-        return
-    if len(sys.argv) != 5:
-        sys.exit(__doc__)
-    nt, nr = int(sys.argv[1]), int(sys.argv[2])
-    mail, inp = sys.argv[3], sys.argv[4]
+def write_mesh(nt, nr, mail, inp, heading):
+    """The NT x NR mesh: the .mail file `mail`, and the mesh part of the .inp into open file
+    `inp` (nodes, elements EALL, node sets NBAS, NGAUCHE, NA). The inner edge is face 4 of
+    elements 1 to NT."""
     ni, nj = 2 * nt, 2 * nr  # half steps: i around (angle), j outwards (radius)
     ids, coords = {}, []
     for j in range(nj + 1):
@@ -77,9 +74,18 @@ def main():
                 ("A", [ids[(0, 0)]]),    # (a, 0)
                 ("B", [ids[(0, nj)]])])  # (b, 0)
 
-    with open(inp, "w") as f:
-        write_inp_mesh(f, "Thick cylinder, quarter model, NT=%d NR=%d, CPE8" % (nt, nr), "CPE8", coords, quads,
-                       [("NBAS", bottom), ("NGAUCHE", left), ("NA", [ids[(0, 0)]])])
+    write_inp_mesh(inp, heading, "CPE8", coords, quads, [("NBAS", bottom), ("NGAUCHE", left), ("NA", [ids[(0, 0)]])])
+
+
+def main():
+    if len(sys.argv) == 4 and sys.argv[1] == "--frd-ux":
+        print("%.7g" % frd_value(sys.argv[2], sys.argv[3], "DISP"))
+        return
+    if len(sys.argv) != 5:
+        sys.exit(__doc__)
+    nt, nr = int(sys.argv[1]), int(sys.argv[2])
+    with open(sys.argv[4], "w") as f:
+        write_mesh(nt, nr, sys.argv[3], f, "Thick cylinder, quarter model, NT=%d NR=%d, CPE8" % (nt, nr))
         f.write("*MATERIAL, NAME=STEEL\n*ELASTIC\n%g, %g\n*PLASTIC\n%g, 0.0\n" % (E, NU, SY))
         f.write("*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n%g\n" % (A / 100.0))
         f.write("*BOUNDARY\nNBAS, 2, 2, 0.0\nNGAUCHE, 1, 1, 0.0\n")

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "mechanics/plane_tensor.hpp"
 
 namespace aster::mechanics {
 namespace {
@@ -33,9 +34,6 @@ LemaitreParameters checkedParameters(const char* relation, double young, double 
   p.theta = theta;
   return p;
 }
-
-// Tensor components in the order xx, yy, zz, xy; the contraction a:b counts xy twice.
-double contract(const double a[4], const double b[4]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2 * a[3] * b[3]; }
 
 }  // namespace
 

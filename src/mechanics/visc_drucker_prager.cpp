@@ -6,12 +6,10 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "mechanics/plane_tensor.hpp"
 
 namespace aster::mechanics {
 namespace {
-
-// Tensor components in the order xx, yy, zz, xy; the contraction a:b counts xy twice.
-double contract(const double a[4], const double b[4]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2 * a[3] * b[3]; }
 
 // The local equation in dp: F(x) = c <f1 - f2 x - f3 x^2 - f4 x^3>^N - x, and F'.
 struct RateEquation {

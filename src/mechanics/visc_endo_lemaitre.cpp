@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "mechanics/plane_tensor.hpp"
 
 namespace aster::mechanics {
 namespace {
@@ -18,9 +19,6 @@ constexpr double kSqrt2 = 1.4142135623730951;
 void require(bool ok, const std::string& what, double value) {
   if (!ok) throw Error("VISC_ENDO_LEMA: " + what + ", got " + format::shortest(value));
 }
-
-// Tensor components xx, yy, zz, xy; the contraction counts xy twice.
-double contract(const double a[4], const double b[4]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2 * a[3] * b[3]; }
 
 // The scalar equation's terms at u = x^(1/N) (x = dr), for the trial von Mises stress q.
 struct Flow {

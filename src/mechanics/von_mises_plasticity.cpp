@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "mechanics/plane_tensor.hpp"
 
 namespace aster::mechanics {
 namespace {
@@ -43,9 +44,6 @@ Layout layoutOf(VonMisesVariables v) {
   }
   return {0, 1, -1};
 }
-
-// Tensor components in the order xx, yy, zz, xy; the contraction a:b counts xy twice.
-double contract(const double a[4], const double b[4]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2 * a[3] * b[3]; }
 
 // A root of the increasing function f with f(0) < 0, from the guess xap: secant steps
 // until the root is bracketed, then secant steps kept inside the bracket (bisection when

@@ -26,6 +26,7 @@
 #include "analysis/static_nonlinear.hpp"
 #include "core/error.hpp"
 #include "expr/expression.hpp"
+#include "../support/material_point.hpp"
 #include "mechanics/drucker_prager.hpp"
 #include "mechanics/plane_element.hpp"
 
@@ -58,39 +59,7 @@ DruckerPragerParameters parabolic(double syUltimate = 1.6, bool associated = tru
   return p;
 }
 
-// One material point and its accepted state (4 strain components: xx, yy, zz, xy tensor).
-struct Point {
-  const BehaviourLaw& law;
-  Eigen::Matrix2d strain = Eigen::Matrix2d::Zero();
-  double strainZZ = 0;
-  double stress[4] = {0, 0, 0, 0};
-  std::vector<double> variables;
-  explicit Point(const BehaviourLaw& l) : law(l), variables(l.internalVariableCount(), 0.0) {}
-
-  LawOutput<VoigtTangent> at(const Eigen::Matrix2d& e, double ezz, std::vector<double>& v, bool tangent = true) const {
-    LawInput in;
-    in.strain = e;
-    in.strainZZ = ezz;
-    in.strainIncrement = e - strain;
-    in.strainIncrementZZ = ezz - strainZZ;
-    in.previousStress = stress;
-    in.previousVariables = variables.data();
-    LawOutput<VoigtTangent> out;
-    v.assign(variables.size(), 0.0);
-    out.variables = v.data();
-    law.integrate(in, out, tangent);
-    return out;
-  }
-  void accept(const Eigen::Matrix2d& e, double ezz, const LawOutput<VoigtTangent>& out, const std::vector<double>& v) {
-    strain = e;
-    strainZZ = ezz;
-    stress[0] = out.stress(0, 0);
-    stress[1] = out.stress(1, 1);
-    stress[2] = out.stressZZ;
-    stress[3] = out.stress(0, 1);
-    variables = v;
-  }
-};
+using Point = test_support::MaterialPoint;
 
 Eigen::Matrix2d diag(double xx, double yy) {
   Eigen::Matrix2d e = Eigen::Matrix2d::Zero();
@@ -257,8 +226,8 @@ void expectTangent(const Point& point, const Eigen::Matrix2d& e, double ezz, con
     if (j == kYY) dE(1, 1) = h;
     if (j == kZZ) dzz = h;
     if (j == kXY) dE(0, 1) = dE(1, 0) = h / 2;
-    const auto plus = point.at(e + dE, ezz + dzz, v, false);
-    const auto minus = point.at(e - dE, ezz - dzz, v, false);
+    const auto plus = point.at(e + dE, ezz + dzz, v, 0.0, false);
+    const auto minus = point.at(e - dE, ezz - dzz, v, 0.0, false);
     fd(kXX, j) = (plus.stress(0, 0) - minus.stress(0, 0)) / (2 * h);
     fd(kYY, j) = (plus.stress(1, 1) - minus.stress(1, 1)) / (2 * h);
     fd(kZZ, j) = (plus.stressZZ - minus.stressZZ) / (2 * h);
@@ -335,7 +304,7 @@ TEST(DruckerPrager, PredictionTangentIsTheContinuumOne) {
     EXPECT_NEAR(v[0], point.variables[0], 1e-15);  // no increment: no plastic flow (to rounding)
     // Continue loading along the same direction.
     const double h = 1e-7;
-    const auto ahead = point.at(e * (1 + h), ezz * (1 + h), v, false);
+    const auto ahead = point.at(e * (1 + h), ezz * (1 + h), v, 0.0, false);
     ASSERT_EQ(v[2], 1.0);
     const Eigen::Vector4d de(h * e(0, 0), h * e(1, 1), h * ezz, 2 * h * e(0, 1));
     const Eigen::Vector4d predicted = rest.tangent * de;

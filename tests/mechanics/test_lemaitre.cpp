@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "../support/material_point.hpp"
 #include "mechanics/lemaitre_viscoplasticity.hpp"
 
 using namespace aster;
@@ -29,40 +30,7 @@ LemaitreParameters tight(LemaitreParameters p) {
   return p;
 }
 
-// One material point and its accepted state.
-struct Point {
-  const BehaviourLaw& law;
-  Eigen::Matrix2d strain = Eigen::Matrix2d::Zero();
-  double strainZZ = 0;
-  double stress[4] = {0, 0, 0, 0};
-  std::vector<double> variables;
-  explicit Point(const BehaviourLaw& l) : law(l), variables(l.internalVariableCount(), 0.0) {}
-
-  LawOutput<VoigtTangent> at(const Eigen::Matrix2d& e, double ezz, double dt, std::vector<double>& newVariables) const {
-    LawInput in;
-    in.strain = e;
-    in.strainZZ = ezz;
-    in.strainIncrement = e - strain;
-    in.strainIncrementZZ = ezz - strainZZ;
-    in.previousStress = stress;
-    in.previousVariables = variables.data();
-    in.timeIncrement = dt;
-    LawOutput<VoigtTangent> out;
-    newVariables.assign(variables.size(), 0.0);
-    out.variables = newVariables.data();
-    law.integrate(in, out, true);
-    return out;
-  }
-  void accept(const Eigen::Matrix2d& e, double ezz, const LawOutput<VoigtTangent>& out, const std::vector<double>& v) {
-    strain = e;
-    strainZZ = ezz;
-    stress[0] = out.stress(0, 0);
-    stress[1] = out.stress(1, 1);
-    stress[2] = out.stressZZ;
-    stress[3] = out.stress(0, 1);
-    variables = v;
-  }
-};
+using Point = test_support::MaterialPoint;
 
 // AXIS, one step of dt: e_rr = e_tt such that s_rr = s_tt = 0, and either the axial
 // stress s_yy = target (stressControl) or the axial strain e_yy = target.
@@ -73,7 +41,7 @@ void uniaxialStep(Point& point, double target, bool stressControl, double dt) {
   std::vector<double> v;
   LawOutput<VoigtTangent> out;
   for (int it = 0; it < 2000; ++it) {  // (Runge-Kutta's elastic tangent converges linearly)
-    out = point.at(e, ett, dt, v);
+    out = point.at(e, ett, v, dt);
     // Unknowns: the lateral strain (e_rr = e_tt), and e_yy under stress control.
     const double r1 = out.stress(0, 0);
     const double a11 = out.tangent(kXX, kXX) + out.tangent(kXX, kZZ);
@@ -243,10 +211,10 @@ TEST(Lemaitre, NortonRungeKuttaCreepAndRelaxationMeetTheClosedForms) {
     Eigen::Matrix2d strain = Eigen::Matrix2d::Zero();
     strain(0, 0) = e;
     std::vector<double> v;
-    point.accept(strain, 0, point.at(strain, 0, 0.0, v), v);
+    point.accept(strain, 0, point.at(strain, 0, v, 0.0), v);
     const double mean = (point.stress[0] + point.stress[1] + point.stress[2]) / 3;
     for (int k = 0; k < steps; ++k) {
-      const auto out = point.at(strain, 0, T / steps, v);
+      const auto out = point.at(strain, 0, v, T / steps);
       point.accept(strain, 0, out, v);
     }
     EXPECT_NEAR(point.stress[0] - point.stress[1], exact, 1e-6 * exact) << steps << " steps";
@@ -270,7 +238,7 @@ void checkTangent(const LemaitreParameters& parameters, PlaneHypothesis hypothes
     if (axis) ezz += 1e-3 * uniform(random);
     const double dt = 5.0 * (1 + uniform(random));
     std::vector<double> v;
-    const auto out = point.at(e, ezz, dt, v);
+    const auto out = point.at(e, ezz, v, dt);
     const double h = 1e-8;
     const int columns[4] = {kXX, kYY, kZZ, kXY};
     for (int column : columns) {
@@ -286,7 +254,7 @@ void checkTangent(const LemaitreParameters& parameters, PlaneHypothesis hypothes
           ep(1, 0) += sign * h / 2;
         }
         std::vector<double> w;
-        const auto o = point.at(ep, ezzp, dt, w);
+        const auto o = point.at(ep, ezzp, w, dt);
         return Eigen::Vector4d(o.stress(0, 0), o.stress(1, 1), o.stressZZ, o.stress(0, 1));
       };
       const Eigen::Vector4d fd = (perturbed(1) - perturbed(-1)) / (2 * h);
@@ -320,7 +288,7 @@ TEST(Lemaitre, NoTimeNoFlow) {
   Eigen::Matrix2d e = Eigen::Matrix2d::Zero();
   e(0, 0) = 2e-3;
   std::vector<double> v;
-  const auto out = point.at(e, 0, 0.0, v);
+  const auto out = point.at(e, 0, v, 0.0);
   const double lambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu)), mu = kE / (2 * (1 + kNu));
   EXPECT_NEAR(out.stress(0, 0), (lambda + 2 * mu) * 2e-3, 1e-9);
   EXPECT_NEAR(out.stressZZ, lambda * 2e-3, 1e-9);

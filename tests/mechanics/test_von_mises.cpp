@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "../support/material_point.hpp"
 #include "mechanics/isotropic_hardening.hpp"
 #include "mechanics/von_mises_plasticity.hpp"
 
@@ -30,41 +31,7 @@ namespace {
 constexpr double kE = 200e3, kNu = 0.3, kSy = 200, kEt = 20e3;
 constexpr double kH = kE * kEt / (kE - kEt);
 
-// One material point and its accepted state.
-struct Point {
-  const BehaviourLaw& law;
-  Eigen::Matrix2d strain = Eigen::Matrix2d::Zero();
-  double strainZZ = 0;
-  double stress[4] = {0, 0, 0, 0};
-  std::vector<double> variables;
-  explicit Point(const BehaviourLaw& l) : law(l), variables(l.internalVariableCount(), 0.0) {}
-
-  // The law's response at a trial total strain, from the accepted state.
-  LawOutput<VoigtTangent> at(const Eigen::Matrix2d& e, double ezz, std::vector<double>& newVariables) const {
-    LawInput in;
-    in.strain = e;
-    in.strainZZ = ezz;
-    in.strainIncrement = e - strain;
-    in.strainIncrementZZ = ezz - strainZZ;
-    in.previousStress = stress;
-    in.previousVariables = variables.data();
-    LawOutput<VoigtTangent> out;
-    newVariables.assign(variables.size(), 0.0);
-    out.variables = newVariables.data();
-    law.integrate(in, out, true);
-    return out;
-  }
-  void accept(const Eigen::Matrix2d& e, double ezz, const LawOutput<VoigtTangent>& out,
-              const std::vector<double>& v) {
-    strain = e;
-    strainZZ = ezz;
-    stress[0] = out.stress(0, 0);
-    stress[1] = out.stress(1, 1);
-    stress[2] = out.stressZZ;
-    stress[3] = out.stress(0, 1);
-    variables = v;
-  }
-};
+using Point = test_support::MaterialPoint;
 
 // C_PLAN, uniaxial stress along x: e_xx given, e_yy such that s_yy = 0 (the law
 // itself makes s_zz = 0). Returns the accepted s_xx.
