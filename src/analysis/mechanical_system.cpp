@@ -410,6 +410,20 @@ std::vector<std::pair<int, double>> MechanicalSystem::imposed(double t) const {
   return out;
 }
 
+std::vector<int> MechanicalSystem::dualizedImposed() const {
+  std::vector<char> dualized(dofCount(), 0), kinematic(dofCount(), 0);
+  for (const auto& applied : problem_.loads)
+    for (const auto& im : applied.load->imposed)
+      for (int n : im.nodes) {
+        const int d = dof(n, im.component);
+        if (d >= 0) (applied.load->kinematic ? kinematic : dualized)[d] = 1;
+      }
+  std::vector<int> out;
+  for (int d = 0; d < dofCount(); ++d)
+    if (dualized[d] && !kinematic[d]) out.push_back(d);
+  return out;
+}
+
 std::vector<linalg::LinearRelation> MechanicalSystem::linearRelations(double t) const {
   const mesh::Mesh& mesh = problem_.model->mesh();
   std::vector<linalg::LinearRelation> out;

@@ -96,6 +96,9 @@ class MechanicalSystem {
 
   // Imposed displacements at t: (dof, value), each DOF once (the last load wins).
   std::vector<std::pair<int, double>> imposed(double t) const;
+  // The DOFs imposed by AFFE_CHAR_MECA(_F) alone, which code_aster dualizes (Lagrange
+  // multipliers) where AFFE_CHAR_CINE's are eliminated; in increasing order.
+  std::vector<int> dualizedImposed() const;
 
   // The linear relations of the loads (LIAISON_DDL, LIAISON_UNIF, LIAISON_SOLIDE, FACE_IMPO
   // DNOR/DTAN) on DOF numbers, their right-hand sides at t (times FONC_MULT), in the order

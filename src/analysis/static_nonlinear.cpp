@@ -43,6 +43,7 @@ StaticNonlinear::StaticNonlinear(MechanicalSystem& system, AdditionalTerms* term
   if (auto* mumps = dynamic_cast<linalg::MumpsSolver*>(solver_->solver.get())) mumps->setOptions(settings_.mumps);
   // Contact's terms keep the check: their symmetry is not exact by construction.
   solver_->solver->setSymmetricByConstruction(!terms_ && (system_.symmetricTangent() || settings_.symmetrize));
+  dualized_ = system_.dualizedImposed();
 }
 
 void StaticNonlinear::buildPattern() {
@@ -114,6 +115,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
   step.dataScale = U.head(system_.dofCount()).lpNorm<Eigen::Infinity>();
   for (const auto& [d, v] : step.imposed) step.dataScale = std::max(step.dataScale, std::fabs(v));
   history.clear();
+  dualizedPredictionValid_ = false;
   // PREDICTION='EXTRAPOLE': start from U_n + (dt_{n+1} / dt_n) (U_n - U_{n-1}), the last
   // converged (sub-)step's increment; the first step has none and starts from U_n.
   if (settings_.prediction == Prediction::Extrapolated && previousDt_ > 0)
@@ -175,6 +177,7 @@ bool StaticNonlinear::solveStep(Eigen::VectorXd& U, double t0, double t1, std::v
     if (it.residualFirst) assemble(U, t1, true);  // same state: same residual, and now the tangent
     factorAndSolve(U, step, it);
     searchLine(U, step, it);
+    predictDualizedResidual(it);
     report(it, !it.refactored ? "" : it.elastic ? "ELASTIQUE" : "TANGENTE");
     step.statusChanged = terms_ ? terms_->updateStatus(U) : false;
   }
@@ -288,6 +291,14 @@ bool StaticNonlinear::measureResidual(const Step& step, Iteration& it, std::vect
     why = "the residual is not a number (the state became invalid)";
     return false;
   }
+  // At the supports of AFFE_CHAR_MECA, as code_aster: r beyond its linear prediction.
+  dualizedResidual_.setZero(static_cast<int>(dualized_.size()));
+  if (dualizedPredictionValid_)
+    for (size_t j = 0; j < dualized_.size(); ++j)
+      if (step.fixed[dualized_[j]]) {
+        dualizedResidual_(j) = r_(dualized_[j]) - dualizedPredicted_(j);
+        resMax = std::max(resMax, std::fabs(dualizedResidual_(j)));
+      }
   it.resMax = resMax;
   it.rela = denom > 0 ? resMax / denom : resMax;
   history.push_back(settings_.useRela ? it.rela : resMax);
@@ -346,6 +357,13 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
   if (it.refactored) {
     // A tangent is eliminated in place (it is assembled again before it is factorized
     // again); the elastic matrix, kept for the whole run, is copied first.
+    if (!dualized_.empty()) {
+      linalg::SparseMatrix select(static_cast<int>(dualized_.size()), n_);
+      std::vector<Eigen::Triplet<double>> ones;
+      for (size_t j = 0; j < dualized_.size(); ++j) ones.emplace_back(static_cast<int>(j), dualized_[j], 1.0);
+      select.setFromTriplets(ones.begin(), ones.end());
+      dualizedRows_ = select * Kuse;
+    }
     if (it.elastic) KelasticEliminated_ = Kelastic_;
     linalg::SparseMatrix& A = it.elastic ? KelasticEliminated_ : K_;
     linalg::eliminateFixedUnknowns(A, step.fixed);
@@ -360,6 +378,18 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
   stats_.solveSeconds += seconds(solveStart);
   it.fixedKept = dUc.lpNorm<Eigen::Infinity>() == 0;
   U += it.correction;
+  if (!dualized_.empty()) {
+    dualizedPredicted_.resize(static_cast<int>(dualized_.size()));
+    for (size_t j = 0; j < dualized_.size(); ++j) dualizedPredicted_(j) = r_(dualized_[j]);
+    dualizedPredictionValid_ = true;
+  }
+}
+
+// The linear prediction of r at the supports of AFFE_CHAR_MECA after the correction
+// (times the line search's coefficient).
+void StaticNonlinear::predictDualizedResidual(const Iteration& it) {
+  if (!dualizedPredictionValid_) return;
+  dualizedPredicted_ += it.rho * (dualizedRows_ * it.correction) - (1 - it.rho) * dualizedResidual_;
 }
 
 // With linear relations: dU = T dv + g_d, where g_d = (T U + g) - U brings U onto the
@@ -386,6 +416,7 @@ void StaticNonlinear::solveWithRelations(Eigen::VectorXd& U, const Step& step, I
   Eigen::VectorXd dv;
   solver_->solver->solve(rhs, dv);
   stats_.solveSeconds += seconds(solveStart);
+  dualizedPredictionValid_ = false;  // with relations, the supports' residual is not measured
   it.correction = e.expand(dv) - e.offset() + gd;
   it.fixedKept = gd.lpNorm<Eigen::Infinity>() == 0;
   U += it.correction;

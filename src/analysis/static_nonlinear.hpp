@@ -137,6 +137,17 @@ class StaticNonlinear {
   enum class Factorized { None, Tangent, Elastic };
   Factorized factorized_ = Factorized::None;
   std::vector<char> lastFixed_;
+  // code_aster's residual at the supports of AFFE_CHAR_MECA, dualized there: r at the DOF
+  // plus the reaction of its Lagrange multiplier, which the linear solves update, i.e. what
+  // r moved there beyond the linear prediction r + K dU (with a line search's rho:
+  // e' = r(U + rho dU) - r(U) - rho K dU + (1 - rho) e). The DOFs, the rows of the matrix
+  // last factorized at them (before elimination), r there as the last correction predicts
+  // it, and the residual e last measured there.
+  std::vector<int> dualized_;
+  linalg::SparseMatrix dualizedRows_;
+  Eigen::VectorXd dualizedPredicted_, dualizedResidual_;
+  bool dualizedPredictionValid_ = false;
+  void predictDualizedResidual(const Iteration& it);
   // With linear relations: the elimination the factorization held, and its reduced matrix.
   std::shared_ptr<const linalg::ConstraintElimination> lastElimination_;
   linalg::SparseMatrix reduced_;

@@ -102,9 +102,11 @@ analysis::MechanicalProblem readProblem(const Keywords& k, Session& session,
   bool onlyElastic = true;
   for (const auto& occ : k.factor("COMPORTEMENT")) {
     const auto kin = mechanics::kinematicsFromName(occ.text("DEFORMATION"));
-    if (occ.integer("ITER_INTE_PAS") != 0)
+    // code_aster: -1, 0, 1 never subdivide; -N subdivides into N sub-steps only where the
+    // local integration fails (where it succeeds, the result is that of 0); N > 1 always.
+    if (occ.integer("ITER_INTE_PAS") > 1)
       throw Error("COMPORTEMENT: ITER_INTE_PAS=" + std::to_string(occ.integer("ITER_INTE_PAS")) +
-                  ": the local subdivision of the step is not available (only ITER_INTE_PAS=0); "
+                  ": the imposed local subdivision of the step is not available (only ITER_INTE_PAS <= 1); "
                   "DEFI_LIST_INST's ECHEC cuts the global step instead");
     onlyElastic &= occ.text("RELATION") == "ELAS";
     std::vector<int> cells = occ.has("GROUP_MA") || occ.has("MAILLE") ? selectCells(mesh, occ) : model->cells();

@@ -147,11 +147,11 @@ void DruckerPrager::integrate(const LawInput& in, LawOutput<VoigtTangent>& out, 
   out.strainZZ = hypothesis_ == PlaneHypothesis::PlaneStrain ? 0.0 : in.strainZZ;
   if (!withTangent) return;
 
-  // No increment yet (a step's prediction) on the yield surface after a plastic step:
-  // the continuum elastic-plastic tangent (dp = 0) of the previous step's mode, as
-  // code_aster's RIGI_MECA_TANG.
+  // No increment yet (a step's prediction) after a plastic step: the continuum
+  // elastic-plastic tangent (dp = 0) at the previous stress, of the previous step's mode
+  // (INDIPLAS) whatever the yield function there, as code_aster's RIGI_MECA_TANG.
   Mode tangentMode = mode;
-  if (atRest && mode == kElastic && vn[2] > 0.5 && f >= -1e-12 * scale)
+  if (atRest && mode == kElastic && vn[2] > 0.5)
     tangentMode = vn[2] > 1.5 ? kApex : (qe > 0 ? kCone : kElastic);
 
   VoigtTangent& D = out.tangent;

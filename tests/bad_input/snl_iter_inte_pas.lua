@@ -1,6 +1,7 @@
 -- expect-exit: 2
--- expect-output: <F> <STAT_NON_LINE> .*snl_iter_inte_pas\.lua:12: COMPORTEMENT: ITER_INTE_PAS=4: the local subdivision of the step is not available \(only ITER_INTE_PAS=0\)
--- The local subdivision of the step at a Gauss point is refused by name.
+-- expect-output: <F> <STAT_NON_LINE> .*snl_iter_inte_pas\.lua:13: COMPORTEMENT: ITER_INTE_PAS=4: the imposed local subdivision of the step is not available \(only ITER_INTE_PAS <= 1\)
+-- The imposed local subdivision of the step at a Gauss point (ITER_INTE_PAS > 1) is refused by name;
+-- negative values (a subdivision only where the local integration fails) are accepted.
 DEBUT{}
 DEFI_FICHIER{ACTION = 'ASSOCIER', UNITE = 20, FICHIER = 'base.mail'}
 MA = LIRE_MAILLAGE{FORMAT = 'ASTER', UNITE = 20}

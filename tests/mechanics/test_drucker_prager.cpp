@@ -15,6 +15,7 @@
 // I1_e = 9 K e; the return to the apex gives A (9 K e - 9 K A dp) = SY + H dp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -314,6 +315,33 @@ TEST(DruckerPrager, PredictionTangentIsTheContinuumOne) {
     EXPECT_LE((predicted - actual).cwiseAbs().maxCoeff(), 1e-5 * actual.cwiseAbs().maxCoeff())
         << predicted.transpose() << "\n" << actual.transpose();
   }
+}
+
+// The prediction follows the previous step's INDIPLAS alone, as code_aster's RIGI_MECA_TANG:
+// with INDIPLAS = 1 and a stress inside the cone (an initial state, say) the tangent is
+// still the continuum one, D = De - v v^T / h, v = 3 mu s / q + 3 K A 1, h = 3 mu + 9 K A^2 + H.
+TEST(DruckerPrager, PredictionFollowsThePreviousIndicator) {
+  constexpr double H = 50;
+  DruckerPrager law(linear(H, 0.05), PlaneHypothesis::PlaneStrain);
+  Point point(law);
+  const double sigma[4] = {-1.0, -1.2, -1.0, 0.1};
+  std::copy(sigma, sigma + 4, point.stress);
+  point.variables = {0.01, 3 * kA * 0.01, 1.0};
+  const double mean = (sigma[0] + sigma[1] + sigma[2]) / 3;
+  const double s[4] = {sigma[0] - mean, sigma[1] - mean, sigma[2] - mean, sigma[3]};
+  const double q = std::sqrt(1.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * s[3] * s[3]));
+  ASSERT_LT(q + kA * 3 * mean - (kSy + H * 0.01), -0.5);  // well inside the cone
+  std::vector<double> v;
+  const auto rest = point.at(Eigen::Matrix2d::Zero(), 0, v);
+  EXPECT_EQ(v[2], 0.0);  // no flow
+  const double h = 3 * kMu + 9 * kK * kA * kA + H;
+  double g[4];
+  for (int i = 0; i < 4; ++i) g[i] = 3 * kMu * s[i] / q + (i < 3 ? 3 * kK * kA : 0.0);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double elastic = i < 3 && j < 3 ? kK + 2 * kMu * ((i == j ? 1.0 : 0.0) - 1.0 / 3.0) : i == j ? kMu : 0.0;
+      EXPECT_NEAR(rest.tangent(i, j), elastic - g[i] * g[j] / h, 1e-12 * kE) << i << ", " << j;
+    }
 }
 
 TEST(DruckerPrager, NonAssociatedTangentIsUnsymmetric) {

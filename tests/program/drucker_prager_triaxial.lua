@@ -43,11 +43,14 @@ L = DEFI_LIST_REEL{DEBUT = 0.0, INTERVALLE = {{JUSQU_A = 1.0, NOMBRE = 1}, {JUSQ
 local function eyyAt(t) return t <= 1 and e0 * t or e0 + (t - 1) / 4 * (-0.012 - e0) end
 local deltaYield = (SY + 3 * A * Pc) / (1 - A)
 
-for _, case in ipairs({{name = 'LINEAIRE', mat = LINE}, {name = 'PARABOLIQUE', mat = PARA}}) do
+-- PARABOLIQUE again with ITER_INTE_PAS = -10 (as ssnv168b): a local subdivision only where the
+-- local integration fails, which it never does here, so the same closed form holds.
+for _, case in ipairs({{name = 'LINEAIRE', mat = LINE, pas = 0}, {name = 'PARABOLIQUE', mat = PARA, pas = 0},
+                       {name = 'PARABOLIQUE', mat = PARA, pas = -10}}) do
   local CM = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = case.mat}}
   local R = STAT_NON_LINE{MODELE = AX, CHAM_MATER = CM,
                           EXCIT = {{CHARGE = BC}, {CHARGE = CONF, FONC_MULT = RAMP}, {CHARGE = AXIAL, FONC_MULT = EYY}},
-                          COMPORTEMENT = {RELATION = 'DRUCK_PRAGER'}, INCREMENT = {LIST_INST = L},
+                          COMPORTEMENT = {RELATION = 'DRUCK_PRAGER', ITER_INTE_PAS = case.pas}, INCREMENT = {LIST_INST = L},
                           CONVERGENCE = {RESI_GLOB_RELA = 1e-12}}
   local plastic = 0
   for k = 1, 16 do
