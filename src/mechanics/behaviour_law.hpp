@@ -84,10 +84,9 @@ class BehaviourLaw {
   virtual bool symmetricTangent() const { return true; }
   // Whether a step's prediction balances the internal forces of the accepted state rather
   // than those of the law integrated over the step at the same displacement, which differ
-  // for a law whose stress moves with time at an unchanged strain: LEMAITRE and NORTON,
-  // whose prediction by code_aster's RIGI_MECA_TANG this reproduces (ssnp02a-c to 3e-9,
-  // 3e-5 without). VISC_DRUC_PRAG and VISC_ENDO_LEMA meet code_aster's values as closely
-  // or more without it (ssnv211a: 2e-9 without, 6e-8 with).
+  // for a law whose stress moves with time at an unchanged strain (the viscous laws): as
+  // code_aster's prediction (RIGI_MECA_TANG) does; ssnp02a-c meet its values to 3e-9 so,
+  // to 3e-5 otherwise. Convergence is never declared on this residual.
   virtual bool predictsFromAcceptedState() const { return false; }
   // Throws aster::Error for a state the law cannot integrate (the step is then cut).
   virtual void integrate(const LawInput& in, LawOutput<VoigtTangent>& out, bool withTangent) const = 0;

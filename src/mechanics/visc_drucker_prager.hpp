@@ -75,6 +75,7 @@ class ViscDruckerPrager final : public BehaviourLaw {
 
   PlaneHypothesis hypothesis() const override { return hypothesis_; }
   int internalVariableCount() const override { return 4; }
+  bool predictsFromAcceptedState() const override { return true; }
   std::vector<std::string> internalVariableNames() const override;
   // Throws aster::Error when the local Newton does not converge, or the return
   // would cross the apex of the cone (the driver then cuts the step).

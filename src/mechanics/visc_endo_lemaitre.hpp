@@ -67,6 +67,7 @@ class ViscEndoLemaitre final : public BehaviourLaw {
 
   PlaneHypothesis hypothesis() const override { return hypothesis_; }
   int internalVariableCount() const override { return 10; }
+  bool predictsFromAcceptedState() const override { return true; }
   std::vector<std::string> internalVariableNames() const override;
   // Throws aster::Error when the scalar equation is not solved within ITER_INTE_MAXI
   // iterations (the driver then cuts the step).
