@@ -1,16 +1,14 @@
 #include "mesh/lac_patches.hpp"
 
 #include <map>
-#include <unordered_set>
 #include <utility>
 
 #include "core/error.hpp"
+#include "mesh/cell_children.hpp"
 
 namespace aster::mesh {
 
 namespace {
-
-using Children = std::vector<std::pair<CellType, std::vector<int>>>;
 
 std::pair<int, int> edgeKey(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
 
@@ -42,7 +40,7 @@ LacPatches cutLacPatches(const Mesh& in, const std::vector<int>& slaveCells) {
     return out.addNode(x, name);
   };
 
-  std::vector<Children> children(in.cellCount());
+  std::vector<CellChildren> children(in.cellCount());
   std::vector<int> slaveOf(in.cellCount(), -1);  // the 2D cell -> the slave segment it bears
   for (int s : slaveCells) {
     const CellType st = in.cellType(s);
@@ -96,32 +94,7 @@ LacPatches cutLacPatches(const Mesh& in, const std::vector<int>& slaveCells) {
     }
   }
 
-  // Untouched cells keep their names; children get fresh ones.
-  std::unordered_set<std::string> taken;
-  for (int c = 0; c < in.cellCount(); ++c)
-    if (children[c].empty()) taken.insert(in.cellName(c));
-  int counter = 1;
-  auto freshName = [&] {
-    std::string name;
-    do name = "M" + std::to_string(counter++);
-    while (taken.count(name));
-    taken.insert(name);
-    return name;
-  };
-  std::vector<std::vector<int>> newCells(in.cellCount());
-  for (int c = 0; c < in.cellCount(); ++c) {
-    if (children[c].empty()) {
-      const auto n = in.cellNodes(c);
-      newCells[c].push_back(out.addCell(in.cellType(c), n.first, n.count, in.cellName(c)));
-    } else {
-      for (const auto& [type, nodes] : children[c]) newCells[c].push_back(out.addCell(type, nodes, freshName()));
-    }
-  }
-  for (const auto& g : in.cellGroupNames()) {
-    std::vector<int> members;
-    for (int c : in.cellGroup(g)) members.insert(members.end(), newCells[c].begin(), newCells[c].end());
-    out.addCellGroup(g, std::move(members));
-  }
+  const std::vector<std::vector<int>> newCells = addCellsAndChildren(in, children, out);
   for (const auto& g : in.nodeGroupNames()) out.addNodeGroup(g, in.nodeGroup(g));
 
   LacPatches result{std::move(out), {}};

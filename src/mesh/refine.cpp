@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <map>
-#include <unordered_set>
 
 #include "core/error.hpp"
+#include "mesh/cell_children.hpp"
 #include "mesh/group_ops.hpp"
 
 namespace aster::mesh {
@@ -100,39 +100,14 @@ class Refiner {
       }
     }
     // Children of every split 2D cell (their nodes created on the way).
-    std::vector<std::vector<std::pair<CellType, std::vector<int>>>> children(in_.cellCount());
+    std::vector<CellChildren> children(in_.cellCount());
     for (int c = 0; c < in_.cellCount(); ++c)
       if (split[c]) children[c] = splitSurface(c);
     // Then the segments lying on split edges.
     for (int c = 0; c < in_.cellCount(); ++c)
       if (!split[c]) children[c] = splitSegment(c);
 
-    // Names: untouched cells keep theirs, children get fresh ones.
-    std::unordered_set<std::string> taken;
-    for (int c = 0; c < in_.cellCount(); ++c)
-      if (children[c].empty()) taken.insert(in_.cellName(c));
-    int counter = 1;
-    auto freshName = [&] {
-      std::string name;
-      do name = "M" + std::to_string(counter++);
-      while (taken.count(name));
-      taken.insert(name);
-      return name;
-    };
-    std::vector<std::vector<int>> newCells(in_.cellCount());
-    for (int c = 0; c < in_.cellCount(); ++c) {
-      if (children[c].empty()) {
-        const auto n = in_.cellNodes(c);
-        newCells[c].push_back(out_.addCell(in_.cellType(c), n.first, n.count, in_.cellName(c)));
-      } else {
-        for (const auto& [type, nodes] : children[c]) newCells[c].push_back(out_.addCell(type, nodes, freshName()));
-      }
-    }
-    for (const auto& g : in_.cellGroupNames()) {
-      std::vector<int> members;
-      for (int c : in_.cellGroup(g)) members.insert(members.end(), newCells[c].begin(), newCells[c].end());
-      out_.addCellGroup(g, std::move(members));
-    }
+    addCellsAndChildren(in_, children, out_);
     refineNodeGroups();
     return std::move(out_);
   }
@@ -157,7 +132,7 @@ class Refiner {
     return n;
   }
 
-  std::vector<std::pair<CellType, std::vector<int>>> splitSurface(int c) {
+  CellChildren splitSurface(int c) {
     const CellType t = in_.cellType(c);
     const auto ref = referenceNodes(t);
     const auto cn = in_.cellNodes(c);
@@ -197,7 +172,7 @@ class Refiner {
     return out;
   }
 
-  std::vector<std::pair<CellType, std::vector<int>>> splitSegment(int c) {
+  CellChildren splitSegment(int c) {
     const CellType t = in_.cellType(c);
     const auto n = in_.cellNodes(c);
     if (t == CellType::SEG2) {
