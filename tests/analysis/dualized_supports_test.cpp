@@ -18,35 +18,25 @@
 #include <memory>
 #include <vector>
 
-#include "../support/square_mesh.hpp"
-#include "analysis/static_nonlinear.hpp"
-#include "expr/expression.hpp"
+#include "stiffening_bar.hpp"
 
 using namespace aster;
 
 namespace {
 
 std::vector<double> stretchResiduals(double d, bool kinematic) {
-  auto m = std::make_shared<mesh::Mesh>(test_support::squareMesh(1, mesh::CellType::QUAD4));
-  auto model = std::make_shared<model::Model>(m);
-  std::vector<int> all(m->cellCount());
-  for (int c = 0; c < m->cellCount(); ++c) all[c] = c;
-  model->assign(all, model::Modelisation::PlaneStrain);
-  auto material = std::make_shared<model::ElasticMaterial>();
-  material->E = 1.0;
-  material->NU = 0.0;
-  auto materials = std::make_shared<model::MaterialField>(m->cellCount());
-  materials->assign(all, material);
+  const test_support::Bar bar = test_support::unitBar();
+  const auto& m = bar.mesh;
   model::MechanicalLoad load;
   load.kinematic = kinematic;
   load.imposed.push_back({m->nodesOfCells(m->cellGroup("GAUCHE")), 0, model::SpaceFunction(0.0)});
   load.imposed.push_back({m->nodesOfCells(m->cellGroup("BAS")), 1, model::SpaceFunction(0.0)});
   load.imposed.push_back({m->nodesOfCells(m->cellGroup("DROITE")), 0, model::SpaceFunction(d)});
   analysis::MechanicalProblem problem;
-  problem.model = model;
-  problem.materials = materials;
+  problem.model = bar.model;
+  problem.materials = bar.materials;
   problem.loads.push_back({&load, nullptr});
-  problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::GreenLagrange);
+  problem.kinematics.assign(bar.model->cells().size(), mechanics::Kinematics::GreenLagrange);
   analysis::MechanicalSystem system(problem);
   analysis::NewtonSettings settings;
   settings.resiGlobRela = 1e-6;

@@ -15,6 +15,28 @@
 
 namespace aster::test_support {
 
+// The bar's mesh, its plane strain model and its material (E = 1, NU = 0); loads are the caller's.
+struct Bar {
+  std::shared_ptr<mesh::Mesh> mesh;
+  std::shared_ptr<model::Model> model;
+  std::shared_ptr<model::MaterialField> materials;
+};
+
+inline Bar unitBar() {
+  Bar bar;
+  bar.mesh = std::make_shared<mesh::Mesh>(squareMesh(1, mesh::CellType::QUAD4));
+  bar.model = std::make_shared<model::Model>(bar.mesh);
+  std::vector<int> all(bar.mesh->cellCount());
+  for (int c = 0; c < bar.mesh->cellCount(); ++c) all[c] = c;
+  bar.model->assign(all, model::Modelisation::PlaneStrain);
+  auto material = std::make_shared<model::ElasticMaterial>();
+  material->E = 1.0;
+  material->NU = 0.0;
+  bar.materials = std::make_shared<model::MaterialField>(bar.mesh->cellCount());
+  bar.materials->assign(all, material);
+  return bar;
+}
+
 struct BarRun {
   double u = 0;  // DX of DROITE at the last instant
   int iterations = 0;  // of the last instant
@@ -26,25 +48,17 @@ struct BarRun {
 // ramp: the traction is P t over the instants 0, 1 (else P at every instant).
 inline BarRun pullBar(double P, const analysis::NewtonSettings& settings, bool ramp = false,
                       analysis::NewtonObserver* observer = nullptr) {
-  auto m = std::make_shared<mesh::Mesh>(squareMesh(1, mesh::CellType::QUAD4));
-  auto model = std::make_shared<model::Model>(m);
-  std::vector<int> all(m->cellCount());
-  for (int c = 0; c < m->cellCount(); ++c) all[c] = c;
-  model->assign(all, model::Modelisation::PlaneStrain);
-  auto material = std::make_shared<model::ElasticMaterial>();
-  material->E = 1.0;
-  material->NU = 0.0;
-  auto materials = std::make_shared<model::MaterialField>(m->cellCount());
-  materials->assign(all, material);
+  const Bar bar = unitBar();
+  const auto& m = bar.mesh;
   model::MechanicalLoad load;
   load.imposed.push_back({m->nodesOfCells(m->cellGroup("GAUCHE")), 0, model::SpaceFunction(0.0)});
   load.imposed.push_back({m->nodesOfCells(m->cellGroup("BAS")), 1, model::SpaceFunction(0.0)});
   load.edgeForces.push_back({m->cellGroup("DROITE"), model::SpaceFunction(P), model::SpaceFunction(0.0)});
   analysis::MechanicalProblem problem;
-  problem.model = model;
-  problem.materials = materials;
+  problem.model = bar.model;
+  problem.materials = bar.materials;
   problem.loads.push_back({&load, ramp ? expr::Expression::compile("INST", {"INST"}) : nullptr});
-  problem.kinematics.assign(model->cells().size(), mechanics::Kinematics::GreenLagrange);
+  problem.kinematics.assign(bar.model->cells().size(), mechanics::Kinematics::GreenLagrange);
   analysis::MechanicalSystem system(problem);
   analysis::StaticNonlinear newton(system, nullptr, settings);
   if (observer) newton.addObserver(*observer);
