@@ -1,7 +1,8 @@
 // Frictionless contact as terms added to the mechanical system (DEFI_CONTACT):
-// DISCRETE (node-to-segment, a Lagrange multiplier per slave node, active set)
-// and CONTINUE (LAGS_C at the slave vertex nodes, augmented Lagrangian solved
-// by the generalized Newton method), each also penalised. Kernels and
+// DISCRETE (node-to-segment, a Lagrange multiplier per slave node, active set),
+// CONTINUE (LAGS_C at the slave vertex nodes, augmented Lagrangian solved
+// by the generalized Newton method), each also penalised, and LAC (mortar:
+// nodal weighted gaps, semi-smooth Newton; mortar_contact.cpp). Kernels and
 // conventions: src/contact.
 //
 // Pairing: every Newton iteration pairs the slave nodes (DISCRETE) or the
@@ -82,6 +83,8 @@ struct ContactZone {
 
 struct ContactSettings {
   bool continueFormulation = false;  // FORMULATION='CONTINUE', else 'DISCRETE'
+  // ALGO_CONT='LAC' (CONTINUE, every zone): mortar contact (mortar_contact.cpp).
+  bool mortar = false;
   // LISSAGE='OUI' (CONTINUE only): the gap (JEU of CONT_NOEU too) and the
   // contact force use the smoothed master normals of contact/smoothed_normal.hpp
   // (master nodes in at most two master cells); the tangent is not symmetric.

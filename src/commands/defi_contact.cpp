@@ -73,9 +73,18 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
                       " it bounds; contact normals must point outwards: orient the group with "
                       "MODI_MAILLAGE/ORIE_PEAU, or give VERI_NORM='NON'");
       }
-    zs.outsideTolerance = z.real("TOLE_PROJ_EXT");
-    if (!(zs.outsideTolerance >= 0))
-      throw Error(z.path + "/TOLE_PROJ_EXT = " + std::to_string(zs.outsideTolerance) + ": it must be >= 0");
+    const std::string algo = z.text("ALGO_CONT");
+    const bool lac = algo == "LAC";
+    if (zones.empty()) settings.mortar = lac;
+    if (lac != settings.mortar)
+      throw Error(z.path + "/ALGO_CONT='" + algo + "': ALGO_CONT='LAC' must be given in every zone or in none");
+    if (lac && settings.smoothNormals)
+      throw Error("LISSAGE='OUI': ALGO_CONT='LAC' measures the gaps along the slave normals; give LISSAGE='NON'");
+    if (!lac) {
+      zs.outsideTolerance = z.real("TOLE_PROJ_EXT");
+      if (!(zs.outsideTolerance >= 0))
+        throw Error(z.path + "/TOLE_PROJ_EXT = " + std::to_string(zs.outsideTolerance) + ": it must be >= 0");
+    }
     zs.maxDistance = z.real("DIST_APPA");
     // SANS_GROUP_NO, SANS_NOEUD, SANS_GROUP_MA, SANS_MAILLE: nodes without contact.
     for (const auto& g : z.has("SANS_GROUP_NO") ? z.texts("SANS_GROUP_NO") : std::vector<std::string>{})
@@ -85,10 +94,9 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
         zs.excludedNodes.push_back(n);
     for (int n : namedNodes(mesh, z, "SANS_NOEUD")) zs.excludedNodes.push_back(n);
     for (int n : mesh.nodesOfCells(namedCells(mesh, z, "SANS_MAILLE"))) zs.excludedNodes.push_back(n);
-    const std::string algo = z.text("ALGO_CONT");
     if (!settings.continueFormulation) {
       if (algo == "PENALISATION") zs.penalty = positive(z, "E_N");
-    } else {
+    } else if (!lac) {
       if (algo == "PENALISATION") zs.penalty = positive(z, "COEF_PENA_CONT");
       else zs.rho = positive(z, "COEF_CONT");
       zs.multipliers = z.text("INTERPOL_LAGS_C") == "QUADRATIQUE"
@@ -106,6 +114,8 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
       } else {
         zs.integration = contact::ContactIntegration::Nodes;  // 'AUTO', the validator allows nothing else
       }
+    }
+    if (settings.continueFormulation) {
       const std::string init = z.text("CONTACT_INIT");
       zs.initialStatus = init == "OUI"   ? contact::ForcedStatus::Contact
                          : init == "NON" ? contact::ForcedStatus::Separated

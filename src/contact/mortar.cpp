@@ -144,52 +144,63 @@ std::array<double, 3> slaveShares(const MortarSlave& slave) {
   return out;
 }
 
+namespace {
+
+// The overlap, in doubles: the slave points whose normal line passes between
+// the master's end nodes (side() of opposite signs), when the two face each
+// other at its middle, close enough. False when there is none.
+bool findOverlap(const MortarSlave& slave, const Segment& master, const MortarOptions& options, OverlapEnd& lo,
+                 OverlapEnd& hi) {
+  const Eigen::Vector2d ends[2] = {master.x.row(0).transpose(), master.x.row(1).transpose()};
+  auto inside = [&](double xi) { return side(slave, ends[0], xi) * side(slave, ends[1], xi) <= 0; };
+  OverlapEnd roots[2];
+  int found = 0;
+  for (int b = 0; b < 2; ++b)  // a root at a slave end is that end's inside()
+    if (side(slave, ends[b], -1) * side(slave, ends[b], 1) < 0) roots[found++] = {sideRoot(slave, ends[b]), b};
+  if (found == 2 && roots[1].xi < roots[0].xi) std::swap(roots[0], roots[1]);
+  const bool in0 = inside(-1), in1 = inside(1);
+  if (in0 && in1) {
+    lo = {-1, -1};
+    hi = {1, -1};
+  } else if (in0) {
+    if (found == 0) return false;
+    lo = {-1, -1};
+    hi = roots[0];
+  } else if (in1) {
+    if (found == 0) return false;
+    lo = roots[found - 1];
+    hi = {1, -1};
+  } else {
+    if (found < 2) return false;
+    lo = roots[0];
+    hi = roots[1];
+  }
+  if (!(hi.xi - lo.xi > 1e-12)) return false;
+  const Point p = at(slave.type, slave.current, 0.5 * (lo.xi + hi.xi));
+  double eta = 0;
+  if (!meetMaster(master, p.x, p.t, eta)) return false;
+  const auto f = segmentFrame(master, std::clamp(eta, -1.0, 1.0));
+  const Eigen::Vector2d n(p.t(1), -p.t(0));
+  if (!(n.dot(f.normal) < 0)) return false;
+  const double gap = (f.point - p.x).dot(n) / n.norm();
+  return options.maxDistance < 0 || std::fabs(gap) <= options.maxDistance;
+}
+
+}  // namespace
+
+bool mortarPaired(const MortarSlave& slave, const Segment& master, const MortarOptions& options) {
+  OverlapEnd lo, hi;
+  return findOverlap(slave, master, options, lo, hi);
+}
+
 MortarPair mortarPair(const MortarSlave& slave, const Segment& master, const MortarOptions& options) {
   MortarPair out;
   const int ns = slave.nodes(), nm = master.nodes();
   out.slaveNodes = ns;
   out.masterNodes = nm;
   for (auto& G : out.weightedGap) G = J::constant(0);
-
-  // 1. The overlap, in doubles: the slave points whose normal line passes
-  // between the master's end nodes (side() of opposite signs).
-  const Eigen::Vector2d ends[2] = {master.x.row(0).transpose(), master.x.row(1).transpose()};
-  auto inside = [&](double xi) { return side(slave, ends[0], xi) * side(slave, ends[1], xi) <= 0; };
-  std::vector<OverlapEnd> roots;
-  for (int b = 0; b < 2; ++b)  // a root at a slave end is that end's inside()
-    if (side(slave, ends[b], -1) * side(slave, ends[b], 1) < 0) roots.push_back({sideRoot(slave, ends[b]), b});
-  std::sort(roots.begin(), roots.end(), [](const OverlapEnd& a, const OverlapEnd& b) { return a.xi < b.xi; });
   OverlapEnd lo, hi;
-  const bool in0 = inside(-1), in1 = inside(1);
-  if (in0 && in1) {
-    lo = {-1, -1};
-    hi = {1, -1};
-  } else if (in0) {
-    if (roots.empty()) return out;
-    lo = {-1, -1};
-    hi = roots.front();
-  } else if (in1) {
-    if (roots.empty()) return out;
-    lo = roots.back();
-    hi = {1, -1};
-  } else {
-    if (roots.size() < 2) return out;
-    lo = roots.front();
-    hi = roots.back();
-  }
-  if (!(hi.xi - lo.xi > 1e-12)) return out;
-
-  // The two face each other at the middle of the overlap, close enough.
-  {
-    const Point p = at(slave.type, slave.current, 0.5 * (lo.xi + hi.xi));
-    double eta = 0;
-    if (!meetMaster(master, p.x, p.t, eta)) return out;
-    const auto f = segmentFrame(master, std::clamp(eta, -1.0, 1.0));
-    const Eigen::Vector2d n(p.t(1), -p.t(0));
-    if (!(n.dot(f.normal) < 0)) return out;
-    const double gap = (f.point - p.x).dot(n) / n.norm();
-    if (options.maxDistance >= 0 && std::fabs(gap) > options.maxDistance) return out;
-  }
+  if (!findOverlap(slave, master, options, lo, hi)) return out;
   out.paired = true;
   out.lo = lo.xi;
   out.hi = hi.xi;

@@ -67,6 +67,9 @@ struct MortarPair {
 // other: n_slave . n_master >= 0 at the middle of the overlap).
 MortarPair mortarPair(const MortarSlave& slave, const Segment& master, const MortarOptions& options = {});
 
+// Whether mortarPair() would pair them (the overlap alone, without the integrals).
+bool mortarPaired(const MortarSlave& slave, const Segment& master, const MortarOptions& options = {});
+
 // int_-1^1 N_j |dX/dxi| dxi of each node j of the reference slave cell.
 std::array<double, 3> slaveShares(const MortarSlave& slave);
 
