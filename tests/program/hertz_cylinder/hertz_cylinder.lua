@@ -49,6 +49,13 @@ print(string.format('HERTZ: R = %g, E* = %.6g, P = %.6g per unit thickness, a = 
 MAT = DEFI_MATERIAU{ELAS = {E = E, NU = NU}}
 L = DEFI_LIST_REEL{DEBUT = 0.0, INTERVALLE = {JUSQU_A = 1.0, NOMBRE = 1}}
 
+-- ===== The contact zone: the one place to change (mortar: add ALGO_CONT = 'LAC'). =====
+local function contact(MO)
+  return DEFI_CONTACT{MODELE = MO, FORMULATION = 'CONTINUE',
+                      ZONE = {GROUP_MA_MAIT = 'MAITRE', GROUP_MA_ESCL = 'ESCLAVE', CONTACT_INIT = 'OUI'}}
+end
+-- =====================================================================================
+
 local failures = {}
 local function check(ok, message) if not ok then failures[#failures + 1] = message end end
 
@@ -67,8 +74,7 @@ for level = 1, 7 do
     DDL_IMPO = {{GROUP_MA = 'SYME', DX = 0.0}, {GROUP_MA = 'MAITRE', DX = 0.0, DY = 0.0}},
     FORCE_CONTOUR = {GROUP_MA = 'HAUT', FY = -P / (2 * R)}}
   local RESU = STAT_NON_LINE{MODELE = MO, CHAM_MATER = CM, EXCIT = {{CHARGE = LOAD}},
-    CONTACT = DEFI_CONTACT{MODELE = MO, FORMULATION = 'CONTINUE',
-                           ZONE = {GROUP_MA_MAIT = 'MAITRE', GROUP_MA_ESCL = 'ESCLAVE', CONTACT_INIT = 'OUI'}},
+    CONTACT = contact(MO),
     COMPORTEMENT = {RELATION = 'ELAS', DEFORMATION = 'PETIT'}, INCREMENT = {LIST_INST = L},
     CONVERGENCE = {RESI_GLOB_RELA = 1.0E-10, ITER_GLOB_MAXI = 30}}
   local field = RESU:getField('CONT_NOEU', 1.0)
