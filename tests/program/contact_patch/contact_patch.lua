@@ -45,11 +45,11 @@ local EXX, EYY = NU * (1 + NU) * P / E, -(1 - NU * NU) * P / E  -- the closed fo
 -- ===== The contact definitions: the one place to change. =====
 -- name, DEFI_CONTACT's FORMULATION, keywords added to the ZONE, and whether
 -- the formulation is exact on non-matching meshes (then checked to 1e-8).
--- Mortar contact, when it exists: {name = 'LAC', formulation = 'CONTINUE', zone = {ALGO_CONT = 'LAC'}, exact = true},
 FORMULATIONS = {
   {name = 'DISCRETE', formulation = 'DISCRETE', zone = {}, exact = false},
   {name = 'CONTINUE', formulation = 'CONTINUE', zone = {}, exact = false},
   {name = 'CONT_G6', formulation = 'CONTINUE', zone = {ORDRE_INT = 6}, exact = false},
+  {name = 'LAC', formulation = 'CONTINUE', zone = {ALGO_CONT = 'LAC'}, exact = true},
 }
 local function contact(MO, f, master, slave)
   local zone = {GROUP_MA_MAIT = master, GROUP_MA_ESCL = slave}
