@@ -85,19 +85,31 @@ class MortarContact final : public ContactBase {
       if (lags_[k].excluded) dofs.push_back(first_ + static_cast<int>(k));
   }
 
-  // The pairs: every master cell that a slave cell's normals meet, facing it.
+  // The pairs: every master cell that a slave cell's normals meet, facing it,
+  // among those whose bounding box, grown by the larger of the two cells'
+  // sizes, meets the slave cell's.
   bool update(const Eigen::VectorXd& U) override {
     initialIteration_ = !started_;
     started_ = true;
+    std::vector<std::vector<Box>> masterBoxes(zones_.size());
+    for (std::size_t z = 0; z < zones_.size(); ++z)
+      for (int c : zones_[z].masterCells) masterBoxes[z].push_back(box(segment(c, &U).x, mesh_.cellNodes(c).size()));
     std::vector<Pair> pairs;
     for (std::size_t i = 0; i < cells_.size(); ++i) {
       const auto& sc = cells_[i];
       if (sc.skip) continue;
       const auto s = slave(sc, &U);
+      const Box sb = box(s.current, sc.nodes);
       const auto& masters = zones_[sc.zone].masterCells;
-      for (std::size_t m = 0; m < masters.size(); ++m)
+      for (std::size_t m = 0; m < masters.size(); ++m) {
+        const Box& mb = masterBoxes[sc.zone][m];
+        const double margin = std::max(sb.size(), mb.size());
+        if (mb.lo.x() > sb.hi.x() + margin || sb.lo.x() > mb.hi.x() + margin || mb.lo.y() > sb.hi.y() + margin ||
+            sb.lo.y() > mb.hi.y() + margin)
+          continue;
         if (contact::mortarPaired(s, segment(masters[m], &U), options_[sc.zone]))
           pairs.push_back({static_cast<int>(i), static_cast<int>(m)});
+      }
     }
     const bool changed = pairs != pairs_;
     pairs_ = std::move(pairs);
@@ -192,6 +204,14 @@ class MortarContact final : public ContactBase {
     bool excluded;
   };
 
+  struct Box {
+    Eigen::Vector2d lo, hi;
+    double size() const { return (hi - lo).maxCoeff(); }
+  };
+  static Box box(const contact::SegmentNodes& x, std::size_t nodes) {
+    const auto rows = x.topRows(static_cast<Eigen::Index>(nodes));
+    return {rows.colwise().minCoeff().transpose(), rows.colwise().maxCoeff().transpose()};
+  }
   contact::MortarSlave slave(const SlaveCell& sc, const Eigen::VectorXd* U) const {
     contact::MortarSlave s;
     s.type = mesh_.cellType(sc.cell) == mesh::CellType::SEG3 ? fem::CellType::SEG3 : fem::CellType::SEG2;
