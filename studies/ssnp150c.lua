@@ -114,8 +114,9 @@ local function solve(MA)
 end
 
 local rate = function(e, i) return -math.log(e[i] / e[i - 1]) / math.log(2) end
-local kinds, alphaU, alphaP, lastU, lastP = {}, {}, {}, {}, {}
+local kinds, alphaU, alphaP, lastU, lastP, cpu = {}, {}, {}, {}, {}, {}
 for f, family in ipairs(FAMILIES) do
+  local start = os.clock()
   local h, errU, errP = {}, {}, {}
   local lines = {}
   for i, N in ipairs(family.levels) do
@@ -130,6 +131,7 @@ for f, family in ipairs(FAMILIES) do
   end
   local n = #family.levels
   kinds[f], alphaU[f], alphaP[f], lastU[f], lastP[f] = family.kind, rate(errU, n), rate(errP, n), errU[n], errP[n]
+  cpu[f] = os.clock() - start
   print(string.format('SSNP150%s, %s, %s meshes (LAC: %s):', MODELIZATION, CELL, family.kind, tostring(LAC)))
   print(string.format('%-12s %3s %6s %4s %14s %14s %8s %8s', 'mesh', 'N', 'cells', 'iter', '|U - Uex|',
                       '|p - pex|', 'alpha_U', 'alpha_p'))
@@ -142,7 +144,8 @@ for f, family in ipairs(FAMILIES) do
 end
 for f = 1, #FAMILIES do
   print(string.format('SSNP150%s %s %-12s alpha_U = %.4f alpha_p = %.4f (last mesh: |U - Uex| = %.4e, ' ..
-                      '|p - pex| = %.4e)', MODELIZATION, CELL, kinds[f], alphaU[f], alphaP[f], lastU[f], lastP[f]))
+                      '|p - pex| = %.4e; CPU %.1f s)', MODELIZATION, CELL, kinds[f], alphaU[f], alphaP[f],
+                      lastU[f], lastP[f], cpu[f]))
 end
 RATES = CREA_TABLE{LISTE = {{PARA = 'MAILLAGE', LISTE_K = kinds}, {PARA = 'ALPHA_U', LISTE_R = alphaU},
                             {PARA = 'ALPHA_P', LISTE_R = alphaP}}}
