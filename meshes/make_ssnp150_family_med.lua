@@ -31,11 +31,13 @@ for i, N in ipairs(levels) do
   end
   check('the number of cells of MAITRE', #MAIL:getCells('MAITRE'), 1, N)
   check('the number of nodes of MAITRE', #MAIL:getNodes('MAITRE'), 3, N)
-  if kind ~= 'unstructured' then
-    -- N x N QUAD8: (N+1)^2 vertices + 2 N (N+1) mid-edge nodes; 2 N^2 TRIA6: (2N+1)^2 nodes.
-    check('the number of cells of SURFACE', #MAIL:getCells('SURFACE'), quads and N * N or 2 * N * N, N)
-    check('the number of nodes of SURFACE', #MAIL:getNodes('SURFACE'),
-          quads and (N + 1) ^ 2 + 2 * N * (N + 1) or (2 * N + 1) ^ 2, N)
+  -- Only quadrangles (or only triangles): the square's F cells with a node on
+  -- every vertex and edge, 4N edges on its boundary, have 1 + 3F + 4N nodes
+  -- (1 + 2F + 4N), by Euler's V - E + F = 1 and 4F (3F) = 2E - 4N.
+  local F = #MAIL:getCells('SURFACE')
+  check('the number of nodes of SURFACE', #MAIL:getNodes('SURFACE'), 1 + (quads and 3 or 2) * F + 4 * N, N)
+  if kind ~= 'unstructured' then  -- N x N cells, each split in two triangles for TRIA6
+    check('the number of cells of SURFACE', F, quads and N * N or 2 * N * N, N)
   end
   IMPR_RESU{FORMAT = 'MED', UNITE = 79 + i, RESU = {MAILLAGE = MAIL}}
   DETRUIRE{CONCEPT = {NOM = MAIL}}
