@@ -70,6 +70,9 @@ struct ZoneSettings {
   // CONTINUE, CONTACT_INIT: the statuses of the first Newton iteration of the
   // computation (None: the criterion, i.e. 'INTERPENETRE'; Contact: 'OUI'; Separated: 'NON').
   contact::ForcedStatus initialStatus = contact::ForcedStatus::None;
+  // LAC, ESPACE_LAGS_C='PAIRE': one polynomial multiplier over each pair of
+  // neighbouring slave cells (mortar_contact.cpp), instead of one per node.
+  bool lacPairs = false;
   double outsideTolerance = 0.5;  // TOLE_PROJ_EXT, in master xi units
   double maxDistance = -1;        // DIST_APPA (< 0: no limit)
   std::vector<int> excludedNodes;  // SANS_GROUP_NO, SANS_GROUP_MA: slave nodes without contact

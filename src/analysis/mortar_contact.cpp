@@ -31,6 +31,7 @@
 // Elements: one per pair, DOFs [slave cell DX, DY][master cell DX, DY]
 // [LAGS_C of the slave cell's nodes], and one per LAGS_C (its diagonal).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -46,7 +47,7 @@ class MortarContact final : public ContactBase {
  public:
   MortarContact(const MechanicalSystem& system, std::vector<ContactZone> zones, const ContactSettings& settings)
       : ContactBase(system, std::move(zones), settings) {
-    std::map<int, int> lagsIndex;
+    std::map<int, int> fineIndex;
     for (std::size_t z = 0; z < zones_.size(); ++z) {
       contact::MortarOptions o;
       o.maxDistance = zones_[z].settings.maxDistance;
@@ -56,25 +57,32 @@ class MortarContact final : public ContactBase {
         for (int c : *cells)
           for (int n : mesh_.cellNodes(c)) extent = std::max(extent, position(n, nullptr).cwiseAbs().maxCoeff());
       roundOff_.push_back(1e-12 * std::max(extent, 1e-300));
+      const std::size_t firstCell = cells_.size();
       for (int c : zones_[z].slaveCells) {
         const auto n = mesh_.cellNodes(c);
-        SlaveCell sc{c, static_cast<int>(z), static_cast<int>(n.size()), {-1, -1, -1}, true};
+        SlaveCell sc{c, static_cast<int>(z), static_cast<int>(n.size()), {-1, -1, -1}, {}, {}, true};
         const auto shares = contact::slaveShares(slave(sc, nullptr));
         for (int a = 0; a < sc.nodes; ++a) {
-          auto it = lagsIndex.find(n[a]);
-          if (it == lagsIndex.end()) {
-            it = lagsIndex.emplace(n[a], static_cast<int>(lags_.size())).first;
-            lags_.push_back({n[a], static_cast<int>(z), 0.0, excluded_[z][n[a]] != 0});
+          auto it = fineIndex.find(n[a]);
+          if (it == fineIndex.end()) {
+            it = fineIndex.emplace(n[a], static_cast<int>(fine_.size())).first;
+            fine_.push_back({n[a], static_cast<int>(z), 0.0, excluded_[z][n[a]] != 0, {}});
           }
-          sc.lags[a] = it->second;
-          lags_[it->second].share += shares[a];
+          sc.fine[a] = it->second;
+          fine_[it->second].share += shares[a];
           sc.skip = sc.skip && excluded_[z][n[a]];
         }
         cells_.push_back(sc);
       }
+      buildMultipliers(z, firstCell);
     }
-    for (const auto& l : lags_)
+    for (const auto& l : fine_)
       if (!(l.share > 0)) throw Error("contact (LAC): slave node " + mesh_.nodeName(l.node) + " has no share of the slave length");
+    for (auto& m : lags_)
+      if (!(m.share > 0))
+        throw Error("contact (LAC): the LAGS_C of slave node " + mesh_.nodeName(m.node) + " has no share of the slave length");
+    fineGap_.assign(fine_.size(), 0.0);
+    fineCovered_.assign(fine_.size(), 0.0);
     gap_.assign(lags_.size(), 0.0);
     covered_.assign(lags_.size(), 0.0);
     active_.assign(lags_.size(), 0);
@@ -151,18 +159,20 @@ class MortarContact final : public ContactBase {
   void saveStatus() override { savedStarted_ = started_; }
   void restoreStatus() override { started_ = savedStarted_; }
 
+  // LAGS_C at every slave node: the multiplier field's value there.
   void extendDisplacement(const Eigen::VectorXd& U, mesh::NodalField& depl) const override {
     const int nc = static_cast<int>(depl.components.size());
     std::vector<double> values(static_cast<std::size_t>(nc + 1) * mesh_.nodeCount(), 0.0);
     for (int n = 0; n < mesh_.nodeCount(); ++n)
       for (int c = 0; c < nc; ++c) values[n * (nc + 1) + c] = depl.values[n * nc + c];
-    for (std::size_t k = 0; k < lags_.size(); ++k) values[lags_[k].node * (nc + 1) + nc] = lambda(k, U);
+    for (std::size_t j = 0; j < fine_.size(); ++j) values[fine_[j].node * (nc + 1) + nc] = nodalPressure(j, U);
     depl.components.push_back("LAGS_C");
     depl.values = std::move(values);
   }
 
-  // CONT_NOEU: CONT the status, JEU the mean gap gt_j / (paired part of D_j),
-  // RN = LAGS_C, RNX, RNY the nodal force.
+  // CONT_NOEU at every slave node: CONT 1 when a multiplier whose basis
+  // function is not 0 there is active, JEU the node's weighted gap over the
+  // paired part of its share, RN = LAGS_C, RNX, RNY the nodal force.
   void outputFields(const Eigen::VectorXd& U, std::vector<mesh::NodalField>& fields) const override {
     mesh::NodalField f{"CONT_NOEU", kContNoeu, std::vector<double>(kContNoeu.size() * mesh_.nodeCount(), 0.0)};
     evaluate(U, false);
@@ -172,11 +182,11 @@ class MortarContact final : public ContactBase {
       pairTerms(p, U, res, Ke);
       addLocal(pairDofs(pairs_[p]), res, r);
     }
-    for (std::size_t k = 0; k < lags_.size(); ++k) {
-      double* v = &f.values[5 * lags_[k].node];
-      v[0] = active_[k] ? 1.0 : 0.0;
-      v[1] = covered_[k] > 0 ? gap_[k] / covered_[k] : 0.0;
-      v[2] = lambda(k, U);
+    for (std::size_t j = 0; j < fine_.size(); ++j) {
+      double* v = &f.values[5 * fine_[j].node];
+      for (const auto& [k, w] : fine_[j].multipliers) v[0] = v[0] > 0 || (w != 0 && active_[k]) ? 1.0 : 0.0;
+      v[1] = fineCovered_[j] > 0 ? fineGap_[j] / fineCovered_[j] : 0.0;
+      v[2] = nodalPressure(j, U);
     }
     nodalForces(r, f);
     printNodalTable(f);
@@ -188,8 +198,12 @@ class MortarContact final : public ContactBase {
     int cell;
     int zone;
     int nodes;
-    int lags[3];  // the LAGS_C unknown of each node
-    bool skip;    // every node excluded (SANS_GROUP_NO): no contact on the cell
+    int fine[3];                 // the slave node (fine_) of each local node
+    std::vector<int> multipliers;  // the LAGS_C unknowns whose basis functions are not 0 on the cell
+    // weight[m][a]: multiplier m's basis function at local node a (the basis
+    // function on the cell is sum_a weight[m][a] N_a).
+    std::vector<std::array<double, 3>> weight;
+    bool skip;  // every node excluded (SANS_GROUP_NO): no contact on the cell
   };
   struct Pair {
     int slave;   // in cells_
@@ -197,12 +211,138 @@ class MortarContact final : public ContactBase {
     bool operator==(const Pair& o) const { return slave == o.slave && master == o.master; }
     bool operator!=(const Pair& o) const { return !(*this == o); }
   };
-  struct Lags {
+  // A node of the slave cells.
+  struct SlaveNode {
     int node;
     int zone;
     double share;  // D_j = int N_j dGamma_0 over the slave cells
     bool excluded;
+    std::vector<std::pair<int, double>> multipliers;  // (k, Phi_k at the node)
   };
+  // A LAGS_C unknown, attached to a slave node.
+  struct Lags {
+    int node;
+    int zone;
+    double share;  // D_k = int Phi_k dGamma_0
+    bool excluded;
+  };
+
+  // The LAGS_C unknowns of zone z and their basis functions on its slave
+  // cells (cells_[first ..]). Standard: one at every slave node, the basis
+  // function of node j being N_j on every cell (the cells' own shape
+  // functions). In pairs: the cells are taken two by two along their lines
+  // (cellPairs()), and the multiplier is a polynomial of the cells' degree
+  // over each pair, in the pair's parameter (-1 to 0 on the first cell, 0 to
+  // 1 on the second): quadratic on two SEG3, with LAGS_C unknowns at the
+  // pair's three vertex nodes; linear on two SEG2, at its two ends. A cell
+  // left alone keeps the standard functions.
+  void buildMultipliers(std::size_t z, std::size_t first) {
+    std::map<int, int> index;  // mesh node -> its LAGS_C unknown in this zone
+    auto multiplierAt = [&](int node) {
+      auto it = index.find(node);
+      if (it == index.end()) {
+        it = index.emplace(node, static_cast<int>(lags_.size())).first;
+        lags_.push_back({node, static_cast<int>(z), 0.0, excluded_[z][node] != 0});
+      }
+      return it->second;
+    };
+    std::map<std::pair<int, int>, double> values;  // (unknown, slave node) -> basis function there
+    auto attach = [&](SlaveCell& sc, int k, const std::array<double, 3>& w) {
+      sc.multipliers.push_back(k);
+      sc.weight.push_back(w);
+      for (int a = 0; a < sc.nodes; ++a)
+        if (w[a] != 0) values[{k, sc.fine[a]}] = w[a];
+    };
+    const bool pairs = zones_[z].settings.lacPairs;
+    for (const auto& group : pairs ? cellPairs(first, cells_.size()) : singletons(first, cells_.size())) {
+      if (group.size() == 1) {
+        SlaveCell& sc = cells_[group[0]];
+        const auto n = mesh_.cellNodes(sc.cell);
+        for (int a = 0; a < sc.nodes; ++a) {
+          std::array<double, 3> w{0, 0, 0};
+          w[a] = 1;
+          attach(sc, multiplierAt(n[a]), w);
+        }
+        continue;
+      }
+      SlaveCell& A = cells_[group[0]];
+      SlaveCell& B = cells_[group[1]];
+      const auto na = mesh_.cellNodes(A.cell), nb = mesh_.cellNodes(B.cell);
+      const int shared = na[0] == nb[0] || na[0] == nb[1] ? na[0] : na[1];
+      const int endA = na[0] == shared ? na[1] : na[0], endB = nb[0] == shared ? nb[1] : nb[0];
+      const bool quadratic = A.nodes == 3 && B.nodes == 3;
+      // The pair's parameter at each local node of a cell, and its basis polynomials.
+      auto parameter = [&](const auto& n, int a, int end, double sign) {
+        return n[a] == end ? sign : n[a] == shared ? 0.0 : 0.5 * sign;
+      };
+      std::vector<int> coarse = quadratic ? std::vector<int>{endA, shared, endB} : std::vector<int>{endA, endB};
+      auto basis = [&](std::size_t c, double x) {
+        if (!quadratic) return c == 0 ? 0.5 * (1 - x) : 0.5 * (1 + x);
+        return c == 0 ? 0.5 * x * (x - 1) : c == 1 ? 1 - x * x : 0.5 * x * (x + 1);
+      };
+      for (int side = 0; side < 2; ++side) {
+        SlaveCell& sc = side == 0 ? A : B;
+        const auto& n = side == 0 ? na : nb;
+        for (std::size_t c = 0; c < coarse.size(); ++c) {
+          std::array<double, 3> w{0, 0, 0};
+          for (int a = 0; a < sc.nodes; ++a)
+            w[a] = basis(c, parameter(n, a, side == 0 ? endA : endB, side == 0 ? -1.0 : 1.0));
+          attach(sc, multiplierAt(coarse[c]), w);
+        }
+      }
+    }
+    for (const auto& [key, w] : values) {
+      fine_[key.second].multipliers.push_back({key.first, w});
+      lags_[key.first].share += w * fine_[key.second].share;
+    }
+  }
+  std::vector<std::vector<int>> singletons(std::size_t first, std::size_t last) const {
+    std::vector<std::vector<int>> out;
+    for (std::size_t i = first; i < last; ++i) out.push_back({static_cast<int>(i)});
+    return out;
+  }
+  // The cells first .. last - 1 two by two along their lines (open lines from
+  // an end, then closed ones); a line of an odd number of cells ends with a
+  // cell alone. Every cell alone when a vertex is shared by more than two.
+  std::vector<std::vector<int>> cellPairs(std::size_t first, std::size_t last) const {
+    std::map<int, std::vector<int>> at;  // vertex node -> cells
+    for (std::size_t i = first; i < last; ++i) {
+      const auto n = mesh_.cellNodes(cells_[i].cell);
+      for (int v = 0; v < 2; ++v) at[n[v]].push_back(static_cast<int>(i));
+    }
+    for (const auto& [v, cs] : at)
+      if (cs.size() > 2) return singletons(first, last);
+    std::vector<char> seen(cells_.size(), 0);
+    std::vector<std::vector<int>> out;
+    auto walk = [&](int start, int from) {
+      std::vector<int> line;
+      for (int c = start, v = from; c >= 0;) {
+        line.push_back(c);
+        seen[c] = 1;
+        const auto n = mesh_.cellNodes(cells_[c].cell);
+        const int exit = n[0] == v ? n[1] : n[0];
+        int next = -1;
+        for (int d : at[exit])
+          if (!seen[d]) next = d;
+        c = next;
+        v = exit;
+      }
+      for (std::size_t i = 0; i + 1 < line.size(); i += 2) out.push_back({line[i], line[i + 1]});
+      if (line.size() % 2) out.push_back({line.back()});
+    };
+    for (std::size_t i = first; i < last; ++i) {
+      if (seen[i]) continue;
+      const auto n = mesh_.cellNodes(cells_[i].cell);
+      for (int v = 0; v < 2; ++v)
+        if (at[n[v]].size() == 1) {
+          walk(static_cast<int>(i), n[v]);
+          break;
+        }
+    }
+    for (std::size_t i = first; i < last; ++i)
+      if (!seen[i]) walk(static_cast<int>(i), mesh_.cellNodes(cells_[i].cell)[0]);
+    return out;
+  }
 
   struct Box {
     Eigen::Vector2d lo, hi;
@@ -227,11 +367,17 @@ class MortarContact final : public ContactBase {
     std::vector<int> dofs;
     appendDofs(sc.cell, dofs);
     appendDofs(zones_[sc.zone].masterCells[p.master], dofs);
-    for (int a = 0; a < sc.nodes; ++a) dofs.push_back(first_ + sc.lags[a]);
+    for (int k : sc.multipliers) dofs.push_back(first_ + k);
     return dofs;
   }
   double lambda(std::size_t k, const Eigen::VectorXd& U) const {
     return scales_[lags_[k].zone] * U(first_ + static_cast<int>(k));
+  }
+  // LAGS_C at slave node j: sum_k lambda_k Phi_k there.
+  double nodalPressure(std::size_t j, const Eigen::VectorXd& U) const {
+    double p = 0;
+    for (const auto& [k, w] : fine_[j].multipliers) p += w * lambda(k, U);
+    return p;
   }
   double meanGap(std::size_t k) const {
     const double g = gap_[k] / lags_[k].share;
@@ -241,17 +387,25 @@ class MortarContact final : public ContactBase {
   // The pairs' weighted gaps, the nodal ones, the statuses and the contact residual at U.
   void evaluate(const Eigen::VectorXd& U, bool initial) const {
     terms_.resize(pairs_.size());
-    std::fill(gap_.begin(), gap_.end(), 0.0);
-    std::fill(covered_.begin(), covered_.end(), 0.0);
+    std::fill(fineGap_.begin(), fineGap_.end(), 0.0);
+    std::fill(fineCovered_.begin(), fineCovered_.end(), 0.0);
     for (std::size_t p = 0; p < pairs_.size(); ++p) {
       const auto& sc = cells_[pairs_[p].slave];
       terms_[p] = contact::mortarPair(slave(sc, &U), segment(zones_[sc.zone].masterCells[pairs_[p].master], &U),
                                       options_[sc.zone]);
       for (int a = 0; a < sc.nodes; ++a) {
-        gap_[sc.lags[a]] += terms_[p].weightedGap[a].v;
-        covered_[sc.lags[a]] += terms_[p].pairedShare[a];
+        fineGap_[sc.fine[a]] += terms_[p].weightedGap[a].v;
+        fineCovered_[sc.fine[a]] += terms_[p].pairedShare[a];
       }
     }
+    // The multipliers' weighted gaps gt_k = sum_j Phi_k(j) gt_j.
+    std::fill(gap_.begin(), gap_.end(), 0.0);
+    std::fill(covered_.begin(), covered_.end(), 0.0);
+    for (std::size_t j = 0; j < fine_.size(); ++j)
+      for (const auto& [k, w] : fine_[j].multipliers) {
+        gap_[k] += w * fineGap_[j];
+        covered_[k] += w * fineCovered_[j];
+      }
     residual_ = 0;
     for (std::size_t k = 0; k < lags_.size(); ++k) {
       const auto& l = lags_[k];
@@ -275,31 +429,37 @@ class MortarContact final : public ContactBase {
     const auto& sc = cells_[pairs_[p].slave];
     const auto& t = terms_[p];
     const int q = 2 * (t.slaveNodes + t.masterNodes);
-    const int m = q + sc.nodes;
+    const int m = q + static_cast<int>(sc.multipliers.size());
     res.setZero(m);
     Ke.setZero(m, m);
     const double S = scales_[sc.zone];
-    for (int a = 0; a < sc.nodes; ++a) {
-      const int k = sc.lags[a];
+    for (std::size_t m = 0; m < sc.multipliers.size(); ++m) {
+      const int k = sc.multipliers[m];
       if (!active_[k]) continue;
-      const auto& G = t.weightedGap[a];
+      // The pair's part of gt_k: sum_a Phi_k(a) G_a.
+      contact::MortarJet G = contact::MortarJet::constant(0);
+      for (int a = 0; a < sc.nodes; ++a)
+        if (sc.weight[m][a] != 0) G += sc.weight[m][a] * t.weightedGap[a];
       const double lam = lambda(k, U);
+      const int row = q + static_cast<int>(m);
       res.head(q) += lam * G.g.head(q);
       Ke.topLeftCorner(q, q) += lam * G.h.topLeftCorner(q, q);
-      Ke.col(q + a).head(q) = S * G.g.head(q);
-      Ke.row(q + a).head(q) = S * G.g.head(q).transpose();
-      res(q + a) = S * G.v;
+      Ke.col(row).head(q) = S * G.g.head(q);
+      Ke.row(row).head(q) = S * G.g.head(q).transpose();
+      res(row) = S * G.v;
     }
   }
 
   std::vector<contact::MortarOptions> options_;  // per zone
   std::vector<double> roundOff_;                 // per zone: a mean gap within it is closed
   std::vector<SlaveCell> cells_;
+  std::vector<SlaveNode> fine_;
   std::vector<Lags> lags_;
   std::vector<Pair> pairs_;
   bool started_ = false, savedStarted_ = false, initialIteration_ = false;
   mutable std::vector<contact::MortarPair> terms_;  // per pair, of the last evaluate()
-  mutable std::vector<double> gap_, covered_;       // per LAGS_C: gt_j, and the paired part of D_j
+  mutable std::vector<double> fineGap_, fineCovered_;  // per slave node: gt_j, and the paired part of D_j
+  mutable std::vector<double> gap_, covered_;          // per LAGS_C: gt_k, and the paired part of D_k
   mutable std::vector<char> active_;
   mutable double residual_ = 0;
 };

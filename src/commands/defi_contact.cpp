@@ -86,6 +86,7 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
         throw Error(z.path + "/TOLE_PROJ_EXT = " + std::to_string(zs.outsideTolerance) + ": it must be >= 0");
     }
     zs.maxDistance = z.real("DIST_APPA");
+    if (lac) zs.lacPairs = z.text("ESPACE_LAGS_C") == "PAIRE";
     // SANS_GROUP_NO, SANS_NOEUD, SANS_GROUP_MA, SANS_MAILLE: nodes without contact.
     for (const auto& g : z.has("SANS_GROUP_NO") ? z.texts("SANS_GROUP_NO") : std::vector<std::string>{})
       for (int n : ofGroups(z, "SANS_GROUP_NO", [&] { return mesh.nodeGroup(g); })) zs.excludedNodes.push_back(n);

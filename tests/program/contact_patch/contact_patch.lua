@@ -50,6 +50,7 @@ FORMULATIONS = {
   {name = 'CONTINUE', formulation = 'CONTINUE', zone = {}, exact = false},
   {name = 'CONT_G6', formulation = 'CONTINUE', zone = {ORDRE_INT = 6}, exact = false},
   {name = 'LAC', formulation = 'CONTINUE', zone = {ALGO_CONT = 'LAC'}, exact = true},
+  {name = 'LAC_PAIRE', formulation = 'CONTINUE', zone = {ALGO_CONT = 'LAC', ESPACE_LAGS_C = 'PAIRE'}, exact = true},
 }
 local function contact(MO, f, master, slave)
   local zone = {GROUP_MA_MAIT = master, GROUP_MA_ESCL = slave}
@@ -113,7 +114,7 @@ for level = 1, 8 do
       local sumReaction = 0.0
       for _, n in ipairs(MA:getNodes('BAS')) do sumReaction = sumReaction + reac(n, 'DY') end
       local iterations = R:getAccessParameters().ITER_GLOB
-      print(string.format('PATCH: %-5s %-12s slave %-10s %-8s max|RN+P|/P = %.3e  max|u-u_exact|/|u|max = %.3e'
+      print(string.format('PATCH: %-5s %-12s slave %-10s %-9s max|RN+P|/P = %.3e  max|u-u_exact|/|u|max = %.3e'
                           .. '  Newton iterations %d', cell, matching and 'matching' or 'non-matching', slave, f.name,
                           pressureError, displacementError, iterations[#iterations]))
       near(sumRNY, slaveForce, 1.0E-8 * P, what .. ': sum of RNY on the slave')
