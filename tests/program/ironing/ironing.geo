@@ -4,7 +4,8 @@
 // the slab at the origin's vertical, (0, 1)), with vertical sides up to its
 // top y = 1.5. Both structured (transfinite) and symmetric about x = 0; the
 // slab's top has cells of length h = 0.1, the iron's arc 15 cells of 0.0698
-// (arc length pi / 3 / 15): the contact surfaces' nodes never coincide.
+// (arc length pi / 3 / 15): the contact surfaces' nodes do not coincide (on
+// level 3 both have one at x = 0).
 // `level` (gmsh -setnumber level L): 1 QUAD4, 2 QUAD8, 3 QUAD4 with cells
 // half as long (h = 0.05, 30 cells on the arc).
 // Groups: DALLE, FER (the surfaces), BAS (the slab's bottom y = 0), DESSUS

@@ -60,11 +60,11 @@
 -- (the other runs do not converge: KNOWN_FAILURES). The balances hold to
 -- 1.1e-11 of Fy, Fx = 0 at t = 1 to 1e-9 of Fy (but SYMMETRY_TIES). Fx and Fy
 -- oscillate with the slab's cell as period (Fx changes sign, its mean is 1e-4
--- to 1e-6 of Fy): mesh effects, smaller with h / 2 (the variation of Fy by 3
+-- to 1e-6 of Fy): mesh effects, smaller with h / 2 (the variation of Fy by 4
 -- to 13), and with QUAD8. DISCRETE keeps the slave nodes on the master (JEU 0,
 -- checked on QUAD4); LAC zeroes the weighted gaps (JEU 0: the mean gap) and
--- lets nodes in, by 0.9e-3 .. 2e-3 = 1 to 2 % of a cell with h, 4 times less
--- with h / 2; CONTINUE zeroes the gap at its Gauss points, nodes in by about
+-- lets nodes in, by 0.9e-3 .. 2e-3 = 1 to 2 % of a cell with h, 2.5 to 5 times
+-- less with h / 2; CONTINUE zeroes the gap at its Gauss points, nodes in by about
 -- as much.
 DEBUT()
 D, S = 0.05, 0.5
@@ -94,7 +94,7 @@ FORMULATIONS = {
 -- slab's pressed top, a kink of the master: its projection, so its normal and
 -- force, jumps from one master segment to the other at each iteration.
 --   - At the first step, symmetric: DISCRETE's arc node at x = 0 (the QUAD8
---     arc's middle node, levels 2; the QUAD4 h / 2 arc's vertex, level 3),
+--     arc's middle node, level 2; the QUAD4 h / 2 arc's vertex, level 3),
 --     CONTINUE's middle Gauss point of the arc's middle cell (levels 1, 2),
 --     and CONTINUE with LISSAGE = 'OUI' (level 1). An iron started 1e-3 off
 --     the axis converges (CONTINUE, level 1).
