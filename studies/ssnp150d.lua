@@ -1,52 +1,53 @@
--- SSNP150 modelization D: TRIA6. Convergence of the manufactured solution of
--- 2D contact in large deformations (V6.03.150) on three mesh families made by
--- gmsh at build time (meshes/CMakeLists.txt): structured N x N grids (the main
--- family), unstructured meshes, and trapezoidal meshes (every cell a
--- trapezoid, after Arnold, Boffi and Falk), N = 2 to 64 (h = 1/N). As the
--- reference studies ssnp150c to f (C TRIA3, D TRIA6, E QUAD4, F QUAD8): plane
--- strain, Saint Venant-Kirchhoff, E = 1, NU = 0, two load steps,
--- CONTACT_INIT = 'OUI', RESI_GLOB_MAXI = 1E-12; L2 errors of U over SURFACE and
--- of the contact pressure over BAS at INST = 1, rates from the last two meshes.
--- ssnp150c, d, e and f differ only in the cell type block and the values of
--- VALE_CALC; the contact is chosen in one place (contact_zone).
+-- SSNP150 modelization D: TRIA6, with LAC (mortar) contact. Convergence of the
+-- manufactured solution of 2D contact in large deformations (V6.03.150) on
+-- three mesh families made by gmsh at build time (meshes/CMakeLists.txt):
+-- structured N x N grids, unstructured meshes, and trapezoidal meshes (every
+-- cell a trapezoid, after Arnold, Boffi and Falk), N = 2 to 64 (h = 1/N), with
+-- both LAGS_C spaces of aster-lite's LAC. As the reference studies ssnp150c
+-- to f (C TRIA3, D TRIA6, E QUAD4, F QUAD8): plane strain, Saint
+-- Venant-Kirchhoff, E = 1, NU = 0, two load steps, CONTACT_INIT = 'OUI',
+-- RESI_GLOB_MAXI = 1E-12, LAC; L2 errors of U over SURFACE and of the contact
+-- pressure over BAS at INST = 1, rates from the last two meshes.
+-- ssnp150c, d, e and f differ only in the cell type block.
 DEBUT{CODE = {NIV_PUB_WEB = 'INTERNET'}}
 
 ---------------------------------------------------------------- cell type
-local MODELIZATION = 'D'
-local CELL = 'TRIA6'         -- the cells of SURFACE in the computation
-local GMSH_CELL = 'TRIA6'    -- the cells of the gmsh meshes (TRIA6 or QUAD8)
-local LINEAR = false        -- CREA_MAILLAGE QUAD_LINE first (TRIA3, QUAD4)
-local DEGREE = 2             -- k: the optimal L2 rate of U is k + 1
--- The families and their levels N. checkU: alpha_U is checked against k + 1 to
--- 0.05 (issue 23's target is alpha_U >= k + 1 - 0.05), where CONTINUE reaches
--- it; VALE_CALC is the value computed here (non-regression). Not checked: the
--- unstructured meshes, not nested, whose rates from two meshes scatter by up
--- to 0.1 around k + 1; QUAD8 on trapezoids, whose rate tends to 2, not 3
--- (serendipity elements on non-affine cells, Arnold-Boffi-Falk), and is 2.6
--- at N = 64.
-local FAMILIES = {
-  {kind = 'structured', levels = {2, 4, 8, 16, 32, 64}, checkU = true, VALE_CALC = 2.9985546087664567},
-  {kind = 'unstructured', levels = {2, 4, 8, 16, 32, 64}},
-  {kind = 'trapezoidal', levels = {2, 4, 8, 16, 32, 64}, checkU = true, VALE_CALC = 2.9903424750398444},
+MODELIZATION = 'D'
+CELL = 'TRIA6'         -- the cells of SURFACE in the computation
+GMSH_CELL = 'TRIA6'    -- the cells of the gmsh meshes (TRIA6 or QUAD8)
+LINEAR = false        -- CREA_MAILLAGE QUAD_LINE first (TRIA3, QUAD4)
+DEGREE = 2             -- k: the optimal L2 rate of U is k + 1
+-- The checked rates (case: kind/space); the others are reported only.
+CHECKS = {
+  {case = 'structured/NOEUD', para = 'ALPHA_U', VALE_CALC = 2.9985546088240094},
+  {case = 'structured/PAIRE', para = 'ALPHA_U', VALE_CALC = 2.99845643766928},
+  {case = 'unstructured/NOEUD', para = 'ALPHA_U', VALE_CALC = 3.0464155128643013},
+  {case = 'unstructured/PAIRE', para = 'ALPHA_U', VALE_CALC = 3.046291699681845},
+  {case = 'trapezoidal/NOEUD', para = 'ALPHA_U', VALE_CALC = 2.9903424750173735},
+  {case = 'trapezoidal/PAIRE', para = 'ALPHA_U', VALE_CALC = 2.990284169111693},
+  {case = 'unstructured/PAIRE', para = 'ALPHA_P', VALE_CALC = 2.539513625111753},
 }
+
+-- The meshes (kind, N) on which everything is measured; levels N = 2 to 64.
+local KINDS = {'structured', 'unstructured', 'trapezoidal'}
+local LEVELS = {2, 4, 8, 16, 32, 64}
+-- The two LAGS_C spaces of LAC (DEFI_CONTACT ESPACE_LAGS_C, aster-lite's own):
+-- NOEUD, LAGS_C at every slave node with the slave cells' shape functions;
+-- PAIRE, one polynomial of the cells' degree over each pair of slave cells.
+local SPACES = {'NOEUD', 'PAIRE'}
+
 ---------------------------------------------------------------- contact
--- The one place where the contact is defined: CONTINUE now; LAC later, with
--- the slave edge's cells cut by CREA_MAILLAGE DECOUPE_LAC in prepare_mesh.
-local LAC = false
-local function contact_zone(MO)
-  if LAC then
-    return DEFI_CONTACT{MODELE = MO, FORMULATION = 'CONTINUE',
-                        ZONE = {ALGO_CONT = 'LAC', GROUP_MA_MAIT = 'MAITRE', GROUP_MA_ESCL = 'BAS',
-                                CONTACT_INIT = 'OUI'}}
-  end
-  return DEFI_CONTACT{MODELE = MO, FORMULATION = 'CONTINUE', ALGO_RESO_GEOM = 'NEWTON', ALGO_RESO_CONT = 'NEWTON',
-                      ZONE = {GROUP_MA_MAIT = 'MAITRE', GROUP_MA_ESCL = 'BAS', INTEGRATION = 'GAUSS',
-                              CONTACT_INIT = 'OUI', COEF_CONT = 10.0}}
+local function contact_zone(MO, space)
+  return DEFI_CONTACT{MODELE = MO, FORMULATION = 'CONTINUE',
+                      ZONE = {ALGO_CONT = 'LAC', GROUP_MA_MAIT = 'MAITRE', GROUP_MA_ESCL = 'BAS',
+                              CONTACT_INIT = 'OUI', ESPACE_LAGS_C = space}}
 end
 ------------------------------------------------------------------------------
 
 -- The gmsh mesh of a family at level N, made linear for TRIA3 / QUAD4 (MAITRE
--- stays one SEG3, as in the reference studies), oriented, cut for LAC.
+-- stays one SEG3, as in the reference studies), oriented. The reference
+-- studies also cut the cells along BAS with CREA_MAILLAGE DECOUPE_LAC, which
+-- their LAC needs and aster-lite's does not.
 local function prepare_mesh(kind, N)
   DEFI_FICHIER{UNITE = 20, FICHIER = string.format('ssnp150_meshes/ssnp150_%s_%s_%d.med', kind, GMSH_CELL, N)}
   local MA = LIRE_MAILLAGE{FORMAT = 'MED', UNITE = 20}
@@ -58,9 +59,6 @@ local function prepare_mesh(kind, N)
       if g ~= 'MAITRE' then groups[#groups + 1] = g end
     end
     MA = CREA_MAILLAGE{MAILLAGE = MA, QUAD_LINE = {GROUP_MA = groups}}
-  end
-  if LAC then
-    MA = CREA_MAILLAGE{MAILLAGE = MA, DECOUPE_LAC = {GROUP_MA_ESCL = 'BAS'}}
   end
   return MA
 end
@@ -83,7 +81,7 @@ LINST = DEFI_LIST_REEL{DEBUT = 0.0, INTERVALLE = {JUSQU_A = 1.0, NOMBRE = 2}}
 
 -- One solve: the L2 errors of U over SURFACE and of LAGS_C over BAS at INST = 1,
 -- the number of cells of SURFACE and of Newton iterations.
-local function solve(MA)
+local function solve(MA, space)
   local MO = AFFE_MODELE{MAILLAGE = MA, AFFE = {TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN'}}
   local CHMAT = AFFE_MATERIAU{MAILLAGE = MA, AFFE = {TOUT = 'OUI', MATER = ACIER}}
   local DEPL_IMP = AFFE_CHAR_MECA_F{MODELE = MO, DDL_IMPO = {GROUP_MA = 'HAUT', DX = UX, DY = UY}}
@@ -99,7 +97,7 @@ local function solve(MA)
              {CHARGE = FORC_SUR, FONC_MULT = RAMPE},
              {CHARGE = FORC_VOL, FONC_MULT = RAMPE},
              {CHARGE = BLOCAGE}},
-    CONTACT = contact_zone(MO),
+    CONTACT = contact_zone(MO, space),
     COMPORTEMENT = {RELATION = 'ELAS', DEFORMATION = 'GREEN_LAGRANGE'},
     INCREMENT = {LIST_INST = LINST},
     NEWTON = {REAC_ITER = 1},
@@ -114,49 +112,50 @@ local function solve(MA)
 end
 
 local rate = function(e, i) return -math.log(e[i] / e[i - 1]) / math.log(2) end
-local kinds, alphaU, alphaP, lastU, lastP, cpu = {}, {}, {}, {}, {}, {}
-for f, family in ipairs(FAMILIES) do
-  local start = os.clock()
-  local h, errU, errP = {}, {}, {}
-  local lines = {}
-  for i, N in ipairs(family.levels) do
-    local MA = prepare_mesh(family.kind, N)
-    local cells, iterations
-    errU[i], errP[i], cells, iterations = solve(MA)
-    h[i] = 1.0 / N
-    lines[i] = string.format('%-12s %3d %6d %4d %14.6e %14.6e', family.kind, N, cells, iterations, errU[i], errP[i])
-    if i > 1 then
-      lines[i] = lines[i] .. string.format(' %8.4f %8.4f', rate(errU, i), rate(errP, i))
+local cases, alphaU, alphaP, lastU, lastP, cpu = {}, {}, {}, {}, {}, {}
+for _, kind in ipairs(KINDS) do
+  for _, space in ipairs(SPACES) do
+    local start = os.clock()
+    local h, errU, errP, lines = {}, {}, {}, {}
+    for i, N in ipairs(LEVELS) do
+      local cells, iterations
+      errU[i], errP[i], cells, iterations = solve(prepare_mesh(kind, N), space)
+      h[i] = 1.0 / N
+      lines[i] = string.format('%-12s %3d %6d %4d %14.6e %14.6e', kind, N, cells, iterations, errU[i], errP[i])
+      if i > 1 then lines[i] = lines[i] .. string.format(' %8.4f %8.4f', rate(errU, i), rate(errP, i)) end
     end
+    local c, n = #cases + 1, #LEVELS
+    cases[c] = kind .. '/' .. space
+    alphaU[c], alphaP[c], lastU[c], lastP[c], cpu[c] = rate(errU, n), rate(errP, n), errU[n], errP[n], os.clock() - start
+    print(string.format('SSNP150%s, %s, %s meshes, LAC with ESPACE_LAGS_C = %s:', MODELIZATION, CELL, kind, space))
+    print(string.format('%-12s %3s %6s %4s %14s %14s %8s %8s', 'mesh', 'N', 'cells', 'iter', '|U - Uex|',
+                        '|p - pex|', 'alpha_U', 'alpha_p'))
+    for _, line in ipairs(lines) do print(line) end
+    IMPR_FONCTION{FORMAT = 'PNG', UNITE = 29 + c,
+                  TITRE = string.format('SSNP150%s (%s, %s meshes, LAC %s): L2 errors', MODELIZATION, CELL, kind, space),
+                  COURBE = {{ABSCISSE = h, ORDONNEE = errU, LEGENDE = '|U - Uex|, SURFACE'},
+                            {ABSCISSE = h, ORDONNEE = errP, LEGENDE = '|p - pex|, BAS'}},
+                  ECHELLE_X = 'LOG', ECHELLE_Y = 'LOG', LEGENDE_X = 'h', LEGENDE_Y = 'L2 error', PENTE = 'OUI'}
   end
-  local n = #family.levels
-  kinds[f], alphaU[f], alphaP[f], lastU[f], lastP[f] = family.kind, rate(errU, n), rate(errP, n), errU[n], errP[n]
-  cpu[f] = os.clock() - start
-  print(string.format('SSNP150%s, %s, %s meshes (LAC: %s):', MODELIZATION, CELL, family.kind, tostring(LAC)))
-  print(string.format('%-12s %3s %6s %4s %14s %14s %8s %8s', 'mesh', 'N', 'cells', 'iter', '|U - Uex|',
-                      '|p - pex|', 'alpha_U', 'alpha_p'))
-  for _, line in ipairs(lines) do print(line) end
-  IMPR_FONCTION{FORMAT = 'PNG', UNITE = 29 + f,
-                TITRE = string.format('SSNP150%s (%s, %s meshes): L2 errors', MODELIZATION, CELL, family.kind),
-                COURBE = {{ABSCISSE = h, ORDONNEE = errU, LEGENDE = '|U - Uex|, SURFACE'},
-                          {ABSCISSE = h, ORDONNEE = errP, LEGENDE = '|p - pex|, BAS'}},
-                ECHELLE_X = 'LOG', ECHELLE_Y = 'LOG', LEGENDE_X = 'h', LEGENDE_Y = 'L2 error', PENTE = 'OUI'}
 end
-for f = 1, #FAMILIES do
-  print(string.format('SSNP150%s %s %-12s alpha_U = %.4f alpha_p = %.4f (last mesh: |U - Uex| = %.4e, ' ..
-                      '|p - pex| = %.4e; CPU %.1f s)', MODELIZATION, CELL, kinds[f], alphaU[f], alphaP[f],
-                      lastU[f], lastP[f], cpu[f]))
+for c = 1, #cases do
+  print(string.format('SSNP150%s %s %-18s alpha_U = %.4f alpha_p = %.4f (last mesh: |U - Uex| = %.4e, ' ..
+                      '|p - pex| = %.4e; CPU %.1f s)', MODELIZATION, CELL, cases[c], alphaU[c], alphaP[c],
+                      lastU[c], lastP[c], cpu[c]))
 end
-RATES = CREA_TABLE{LISTE = {{PARA = 'MAILLAGE', LISTE_K = kinds}, {PARA = 'ALPHA_U', LISTE_R = alphaU},
+RATES = CREA_TABLE{LISTE = {{PARA = 'CAS', LISTE_K = cases}, {PARA = 'ALPHA_U', LISTE_R = alphaU},
                             {PARA = 'ALPHA_P', LISTE_R = alphaP}}}
 IMPR_TABLE{TABLE = RATES}
 
--- alpha_U against its theoretical value k + 1, where CONTINUE reaches it.
-for _, family in ipairs(FAMILIES) do
-  if family.checkU then
-    TEST_TABLE{TABLE = RATES, NOM_PARA = 'ALPHA_U', FILTRE = {NOM_PARA = 'MAILLAGE', VALE_K = family.kind},
-               VALE_CALC = family.VALE_CALC, REFERENCE = 'ANALYTIQUE', VALE_REFE = DEGREE + 1.0,
-               CRITERE = 'ABSOLU', PRECISION = 0.05}
-  end
+-- The rates from N = 32 and 64 against the optimal ones: alpha_U against
+-- k + 1 to 0.05 (issue 23's alpha_U >= k + 1 - 0.05), alpha_p in [k + 1/2,
+-- k + 3/2] (issue 23's alpha_p >= k + 1/2), where they are met (CHECKS); the
+-- others are in docs/verification/ssnp150.md. VALE_CALC: the values computed
+-- here (non-regression).
+for _, check in ipairs(CHECKS) do
+  local alpha = check.para == 'ALPHA_U'
+  TEST_TABLE{TABLE = RATES, NOM_PARA = check.para, FILTRE = {NOM_PARA = 'CAS', VALE_K = check.case},
+             VALE_CALC = check.VALE_CALC, REFERENCE = 'ANALYTIQUE', VALE_REFE = DEGREE + 1.0,
+             CRITERE = 'ABSOLU', PRECISION = alpha and 0.05 or 0.5}
 end
 FIN{}
