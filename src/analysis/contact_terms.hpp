@@ -73,6 +73,9 @@ struct ZoneSettings {
   // LAC, ESPACE_LAGS_C='PAIRE': one polynomial multiplier over each pair of
   // neighbouring slave cells (mortar_contact.cpp), instead of one per node.
   bool lacPairs = false;
+  // LAC: the coefficient c of the status criterion LAGS_C + c x gap <= 0 (a
+  // pressure per unit gap; DEFI_CONT's COEF_CONT); <= 0: S / D_j (mortar_contact.cpp).
+  double statusCoefficient = 0;
   double outsideTolerance = 0.5;  // TOLE_PROJ_EXT, in master xi units
   double maxDistance = -1;        // DIST_APPA (< 0: no limit)
   std::vector<int> excludedNodes;  // SANS_GROUP_NO, SANS_GROUP_MA: slave nodes without contact

@@ -379,6 +379,11 @@ class MortarContact final : public ContactBase {
     for (const auto& [k, w] : fine_[j].multipliers) p += w * lambda(k, U);
     return p;
   }
+  // c of node k's status criterion: the zone's, or S / D_k.
+  double statusCoefficient(std::size_t k) const {
+    const double c = zones_[lags_[k].zone].settings.statusCoefficient;
+    return c > 0 ? c : scales_[lags_[k].zone] / lags_[k].share;
+  }
   double meanGap(std::size_t k) const {
     const double g = gap_[k] / lags_[k].share;
     return std::fabs(g) <= roundOff_[lags_[k].zone] ? 0.0 : g;
@@ -416,7 +421,7 @@ class MortarContact final : public ContactBase {
         if (initial && init == contact::ForcedStatus::Contact) active = true;
         else if (initial && init == contact::ForcedStatus::Separated) active = false;
         else if (initial) active = g <= 0;
-        else active = lambda(k, U) + scales_[l.zone] / l.share * g <= 0;
+        else active = lambda(k, U) + statusCoefficient(k) * g <= 0;
       }
       active_[k] = active;
       if (l.excluded || covered_[k] == 0) continue;

@@ -51,10 +51,12 @@ FORMULATIONS = {
   {name = 'CONT_G6', formulation = 'CONTINUE', zone = {ORDRE_INT = 6}, exact = false},
   {name = 'LAC', formulation = 'CONTINUE', zone = {ALGO_CONT = 'LAC'}, exact = true},
   {name = 'LAC_PAIRE', formulation = 'CONTINUE', zone = {ALGO_CONT = 'LAC', ESPACE_LAGS_C = 'PAIRE'}, exact = true},
+  {name = 'DEFI_CONT', command = 'DEFI_CONT', zone = {}, exact = true},  -- code_aster's newer spelling of LAC
 }
 local function contact(MO, f, master, slave)
   local zone = {GROUP_MA_MAIT = master, GROUP_MA_ESCL = slave}
   for k, v in pairs(f.zone) do zone[k] = v end
+  if f.command == 'DEFI_CONT' then return DEFI_CONT{MODELE = MO, ZONE = zone} end
   return DEFI_CONTACT{MODELE = MO, FORMULATION = f.formulation, ZONE = zone}
 end
 -- =============================================================

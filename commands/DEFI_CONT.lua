@@ -1,0 +1,36 @@
+-- code_aster's newer spelling of mortar contact (its DEFI_CONT), run by
+-- aster-lite's LAC (src/analysis/mortar_contact.cpp), frictionless, 2D. Every
+-- keyword here is honoured by src/commands/defi_contact.cpp; values code_aster
+-- offers that aster-lite lacks are outside `into`, and its keywords of features
+-- aster-lite lacks (SEUIL_INIT, DIST_SUPP, DIST_POUTRE, DIST_COQUE, SYME) are absent.
+return OPER{ nom = 'DEFI_CONT', sd_prod = 'char_contact', reentrant = 'n',
+  fr = "Defines frictionless mortar contact zones (code_aster's newer spelling of DEFI_CONTACT's ALGO_CONT='LAC').",
+  SIMP{ 'MODELE', statut = 'o', typ = 'modele_sdaster', fr = "The model." },
+  SIMP{ 'INFO', typ = 'I', defaut = 1, into = {1, 2},
+        fr = "2: prints CONT_NOEU (status, gap, pressure, force of each slave node) at each converged instant." },
+  SIMP{ 'FROTTEMENT', typ = 'TXM', defaut = 'NON', into = {'NON'}, fr = "Friction (none: OUI is not available)." },
+  SIMP{ 'LISSAGE', typ = 'TXM', defaut = 'NON', into = {'NON'},
+        fr = "The gaps are measured along each slave cell's own normals (OUI, smoothed normals, is not available)." },
+  FACT{ 'ZONE', statut = 'o', max = '**', fr = "A contact zone: a master/slave pair.",
+    SIMP{ 'VERI_NORM', typ = 'TXM', defaut = 'OUI', into = {'OUI', 'NON'},
+          fr = "OUI: stop when the normal of a master or slave cell points into the 2D cell it bounds." },
+    SIMP{ 'ALGO_CONT', typ = 'TXM', defaut = 'LAGRANGIEN', into = {'LAGRANGIEN'},
+          fr = "Lagrange multipliers LAGS_C at the slave nodes, semi-smooth Newton on the nodal weighted gaps (NITSCHE and PENALISATION are not available)." },
+    SIMP{ 'VARIANTE', typ = 'TXM', defaut = 'ROBUSTE', into = {'ROBUSTE'},
+          fr = "The formulation's variant (RAPIDE is not available)." },
+    SIMP{ 'TYPE_CONT', typ = 'TXM', defaut = 'UNILATERAL', into = {'UNILATERAL'},
+          fr = "Unilateral contact (BILATERAL and COLLE are not available)." },
+    SIMP{ 'COEF_CONT', typ = 'R', defaut = 100.0, val_min = 0.0,
+          fr = "The coefficient c (> 0) of the status criterion: a slave node is in contact when LAGS_C + c x its mean gap <= 0; a pressure per unit gap, used as given. It changes the Newton iterates, not the solution." },
+    SIMP{ 'APPARIEMENT', typ = 'TXM', defaut = 'MORTAR', into = {'MORTAR'},
+          fr = "Pairing: each slave cell with every master cell its normals meet, integrated exactly over the parts facing each." },
+    SIMP{ 'DIST_APPA', typ = 'R', defaut = -1.0,
+          fr = "A slave cell whose gap to a master cell, at the middle of the part facing it, exceeds this is not paired with it (negative: no limit)." },
+    SIMP{ 'GROUP_MA_MAIT', statut = 'o', typ = 'grma', fr = "Master surface (edges in 2D)." },
+    SIMP{ 'GROUP_MA_ESCL', statut = 'o', typ = 'grma',
+          fr = "Slave surface (edges in 2D), oriented outwards (ORIE_PEAU): the gap is measured along its normals." },
+    SIMP{ 'SANS_GROUP_MA', typ = 'grma', max = '**', fr = "Cells whose nodes are excluded from contact: their LAGS_C is 0." },
+    SIMP{ 'CONTACT_INIT', typ = 'TXM', defaut = 'INTERPENETRE', into = {'INTERPENETRE', 'OUI', 'NON'},
+          fr = "Statuses of the first Newton iteration: in contact where the slave nodes' mean gaps are closed or negative, everywhere, or nowhere." },
+  },
+}
