@@ -17,6 +17,9 @@ CELL = 'QUAD8'         -- the cells of SURFACE in the computation
 GMSH_CELL = 'QUAD8'    -- the cells of the gmsh meshes (TRIA6 or QUAD8)
 LINEAR = false        -- CREA_MAILLAGE QUAD_LINE first (TRIA3, QUAD4)
 DEGREE = 2             -- k: the optimal L2 rate of U is k + 1
+-- The trapezoids again, each QUAD8 made a QUAD9 (CREA_MAILLAGE MODI_MAILLE
+-- QUAD8_9): Lagrange cells keep their order on cells that are not parallelograms.
+EXTRA_KINDS = {{name = 'trapezoid_Q9', mesh = 'trapezoidal', quad9 = true}}
 -- The checked rates (case: kind/space); the others are reported only.
 CHECKS = {
   {case = 'structured/NOEUD', para = 'ALPHA_U', VALE_CALC = 3.0011587394475945},
@@ -24,11 +27,15 @@ CHECKS = {
   {case = 'structured/PAIRE', para = 'ALPHA_P', VALE_CALC = 2.610664144477727},
   {case = 'unstructured/NOEUD', para = 'ALPHA_P', VALE_CALC = 2.708870429922371},
   {case = 'unstructured/PAIRE', para = 'ALPHA_P', VALE_CALC = 2.628360727344294},
+  {case = 'trapezoid_Q9/NOEUD', para = 'ALPHA_U', VALE_CALC = 2.9981458424313714},
+  {case = 'trapezoid_Q9/PAIRE', para = 'ALPHA_U', VALE_CALC = 2.998318741221739},
   {case = 'trapezoidal/PAIRE', para = 'ALPHA_P', VALE_CALC = 2.563407253525595},
 }
 
 -- The meshes (kind, N) on which everything is measured; levels N = 2 to 64.
-local KINDS = {'structured', 'unstructured', 'trapezoidal'}
+-- EXTRA_KINDS (in the cell type block): families of this study's own.
+local KINDS = {{name = 'structured'}, {name = 'unstructured'}, {name = 'trapezoidal'}}
+for _, kind in ipairs(EXTRA_KINDS) do KINDS[#KINDS + 1] = kind end
 local LEVELS = {2, 4, 8, 16, 32, 64}
 -- The two LAGS_C spaces of LAC (DEFI_CONTACT ESPACE_LAGS_C, aster-lite's own):
 -- NOEUD, LAGS_C at every slave node with the slave cells' shape functions;
@@ -48,7 +55,8 @@ end
 -- studies also cut the cells along BAS with CREA_MAILLAGE DECOUPE_LAC, which
 -- their LAC needs and aster-lite's does not.
 local function prepare_mesh(kind, N)
-  DEFI_FICHIER{UNITE = 20, FICHIER = string.format('ssnp150_meshes/ssnp150_%s_%s_%d.med', kind, GMSH_CELL, N)}
+  DEFI_FICHIER{UNITE = 20, FICHIER = string.format('ssnp150_meshes/ssnp150_%s_%s_%d.med', kind.mesh or kind.name,
+                                                   GMSH_CELL, N)}
   local MA = LIRE_MAILLAGE{FORMAT = 'MED', UNITE = 20}
   DEFI_FICHIER{ACTION = 'LIBERER', UNITE = 20}
   MA = MODI_MAILLAGE{reuse = MA, MAILLAGE = MA, ORIE_PEAU = {{GROUP_MA_PEAU = 'MAITRE'}, {GROUP_MA_PEAU = 'BAS'}}}
@@ -59,6 +67,7 @@ local function prepare_mesh(kind, N)
     end
     MA = CREA_MAILLAGE{MAILLAGE = MA, QUAD_LINE = {GROUP_MA = groups}}
   end
+  if kind.quad9 then MA = CREA_MAILLAGE{MAILLAGE = MA, MODI_MAILLE = {TOUT = 'OUI', OPTION = 'QUAD8_9'}} end
   return MA
 end
 
@@ -68,7 +77,7 @@ UX = FORMULE{VALE = '-0.2*Y**3*(X-0.5)', NOM_PARA = {'X', 'Y'}}
 UY = FORMULE{VALE = '-0.05*(X-0.5)**2*(1+Y) - 0.01*Y', NOM_PARA = {'X', 'Y'}}
 
 MMS = CALC_SOLU_MANU{DEPL = {DX = UX, DY = UY}, MATER = ACIER, MODELISATION = 'D_PLAN',
-                     DEFORMATION = 'GREEN_LAGRANGE', MAILLAGE = prepare_mesh('structured', 2),
+                     DEFORMATION = 'GREEN_LAGRANGE', MAILLAGE = prepare_mesh(KINDS[1], 2),
                      BORD = {{NOM = 'DROITE', NORMALE = {1, 0}},
                              {NOM = 'GAUCHE', NORMALE = {-1, 0}},
                              {NOM = 'BAS', NORMALE = {0, -1}, CONTACT = 'OUI'}}}
@@ -120,18 +129,19 @@ for _, kind in ipairs(KINDS) do
       local cells, iterations
       errU[i], errP[i], cells, iterations = solve(prepare_mesh(kind, N), space)
       h[i] = 1.0 / N
-      lines[i] = string.format('%-12s %3d %6d %4d %14.6e %14.6e', kind, N, cells, iterations, errU[i], errP[i])
+      lines[i] = string.format('%-12s %3d %6d %4d %14.6e %14.6e', kind.name, N, cells, iterations, errU[i], errP[i])
       if i > 1 then lines[i] = lines[i] .. string.format(' %8.4f %8.4f', rate(errU, i), rate(errP, i)) end
     end
     local c, n = #cases + 1, #LEVELS
-    cases[c] = kind .. '/' .. space
+    cases[c] = kind.name .. '/' .. space
     alphaU[c], alphaP[c], lastU[c], lastP[c], cpu[c] = rate(errU, n), rate(errP, n), errU[n], errP[n], os.clock() - start
-    print(string.format('SSNP150%s, %s, %s meshes, LAC with ESPACE_LAGS_C = %s:', MODELIZATION, CELL, kind, space))
+    print(string.format('SSNP150%s, %s, %s meshes, LAC with ESPACE_LAGS_C = %s:', MODELIZATION, CELL, kind.name, space))
     print(string.format('%-12s %3s %6s %4s %14s %14s %8s %8s', 'mesh', 'N', 'cells', 'iter', '|U - Uex|',
                         '|p - pex|', 'alpha_U', 'alpha_p'))
     for _, line in ipairs(lines) do print(line) end
     IMPR_FONCTION{FORMAT = 'PNG', UNITE = 29 + c,
-                  TITRE = string.format('SSNP150%s (%s, %s meshes, LAC %s): L2 errors', MODELIZATION, CELL, kind, space),
+                  TITRE = string.format('SSNP150%s (%s, %s meshes, LAC %s): L2 errors', MODELIZATION, CELL, kind.name,
+                                        space),
                   COURBE = {{ABSCISSE = h, ORDONNEE = errU, LEGENDE = '|U - Uex|, SURFACE'},
                             {ABSCISSE = h, ORDONNEE = errP, LEGENDE = '|p - pex|, BAS'}},
                   ECHELLE_X = 'LOG', ECHELLE_Y = 'LOG', LEGENDE_X = 'h', LEGENDE_Y = 'L2 error', PENTE = 'OUI'}
