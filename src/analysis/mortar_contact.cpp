@@ -1,35 +1,43 @@
-// LAC: mortar contact (DEFI_CONTACT FORMULATION='CONTINUE', ZONE ALGO_CONT='LAC'),
-// frictionless, solved by a semi-smooth Newton method on nodal quantities.
+// LAC: mortar contact (DEFI_CONTACT FORMULATION='CONTINUE', ZONE ALGO_CONT='LAC';
+// DEFI_CONT), frictionless, solved by a semi-smooth Newton method on the
+// multipliers' weighted gaps.
 //
-// Unknowns: LAGS_C = lambda_j at every node j of the slave cells, the
-// multiplier interpolated by the slave cells' own shape functions
-// (lambda(xi) = sum_j N_j(xi) lambda_j: linear on a SEG2, quadratic on a
-// SEG3; "standard" mortar multipliers), a normal traction per unit REFERENCE
-// length, <= 0 in compression. Constraint: the nodal weighted gap
+// The multiplier: a normal traction per unit REFERENCE length, <= 0 in
+// compression, lambda = sum_k lambda_k Phi_k over basis functions Phi_k of
+// the slave surface, each a combination of the slave cells' shape functions,
+// Phi_k = sum_j Phi_k(j) N_j (j the slave nodes). ESPACE_LAGS_C='NOEUD': one
+// per slave node, Phi_k = N_k ("standard" mortar multipliers: linear on a
+// SEG2, quadratic on a SEG3); 'PAIRE': one polynomial of the cells' degree
+// over each pair of neighbouring cells (buildMultipliers()). LAGS_C, the
+// nodal output, is lambda at the slave nodes.
+// Constraint: with the nodal weighted gaps
 //   gt_j = sum over the pairs (slave cell, master segment) of G_j
 // (contact/mortar.hpp: int N_j g dGamma_0 over the part of the slave facing
-// the master, g measured along the slave normal). With D_j = int N_j dGamma_0,
-// the mean gap of node j is gm_j = gt_j / D_j, and the contact conditions
-//   lambda_j <= 0,  gt_j >= 0,  lambda_j gt_j = 0
+// the master, g measured along the slave normal), multiplier k's weighted gap
+// is gt_k = int Phi_k g dGamma_0 = sum_j Phi_k(j) gt_j, its mean gap
+// gm_k = gt_k / D_k (D_k the integral of Phi_k's positive part), and the
+// contact conditions
+//   lambda_k <= 0,  gt_k >= 0,  lambda_k gt_k = 0
 // are the root of the complementarity function
-//   C_j = lambda_j - min(0, lambda_j + c gm_j),   c = S / D_j
+//   C_k = lambda_k - min(0, lambda_k + c gm_k),   c = S / D_k
 // (S the zone's stiffness scale, contact_base.hpp: c is a stiffness per unit
-// length, so that the choice is scale-free; it changes the iterates, not the
-// solution). Newton's method on C_j = 0, with the statuses chosen at every
-// assembly from the current iterate (semi-smooth Newton, as code_aster's
-// ALGO_RESO_CONT='NEWTON'): node j is ACTIVE when lambda_j + c gm_j <= 0, and
-//   active:   equation gt_j = 0, and the force sum_j lambda_j dgt_j/du;
-//   inactive: equation lambda_j = 0, and no force (lambda_j's next value is 0).
+// length, so that the choice is scale-free; DEFI_CONT's COEF_CONT replaces it;
+// it changes the iterates, not the solution). Newton's method on C_k = 0, with
+// the statuses chosen at every assembly from the current iterate (semi-smooth
+// Newton, as code_aster's ALGO_RESO_CONT='NEWTON'): k is ACTIVE when
+// lambda_k + c gm_k <= 0, and
+//   active:   equation gt_k = 0, and the force lambda_k dgt_k/du;
+//   inactive: equation lambda_k = 0, and no force (lambda_k's next value is 0).
 // The tangent is the exact derivative of these residuals for frozen statuses
-// (lambda_j d2gt_j/du2, dgt_j/du: contact/mortar.hpp's exact derivatives), and
+// (lambda_k d2gt_k/du2, dgt_k/du: contact/mortar.hpp's exact derivatives), and
 // it is symmetric. The first iteration of a computation takes its statuses
-// from CONTACT_INIT: 'OUI' every paired node active, 'NON' none,
-// 'INTERPENETRE' the nodes whose mean gap is closed (to round-off) or negative.
+// from CONTACT_INIT: 'OUI' every paired multiplier active, 'NON' none,
+// 'INTERPENETRE' those whose mean gap is closed (to round-off) or negative.
 //
 // Scaling as the other formulations (contact_base.hpp): the unknown is
-// lambda / S and its equation S gt_j (or S (lambda / S) = lambda).
+// lambda_k / S and its equation S gt_k (or S (lambda_k / S) = lambda_k).
 // Elements: one per pair, DOFs [slave cell DX, DY][master cell DX, DY]
-// [LAGS_C of the slave cell's nodes], and one per LAGS_C (its diagonal).
+// [the slave cell's multipliers], and one per multiplier (its diagonal).
 #include <algorithm>
 #include <array>
 #include <cmath>
