@@ -15,7 +15,7 @@
 // (contact/mortar.hpp: int N_j g dGamma_0 over the part of the slave facing
 // the master, g measured along the slave normal), multiplier k's weighted gap
 // is gt_k = int Phi_k g dGamma_0 = sum_j Phi_k(j) gt_j, its mean gap
-// gm_k = gt_k / D_k (D_k the integral of Phi_k's positive part), and the
+// gm_k = gt_k / D_k (D_k = int Phi_k dGamma_0), and the
 // contact conditions
 //   lambda_k <= 0,  gt_k >= 0,  lambda_k gt_k = 0
 // are the root of the complementarity function
