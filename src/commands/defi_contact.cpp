@@ -84,6 +84,21 @@ std::shared_ptr<const model::Model> contactModel(const Keywords& k) {
   return model;
 }
 
+// CONTACT_INIT: the statuses of the first Newton iteration.
+contact::ForcedStatus initialStatus(const Keywords& z) {
+  const std::string init = z.text("CONTACT_INIT");
+  return init == "OUI" ? contact::ForcedStatus::Contact
+         : init == "NON" ? contact::ForcedStatus::Separated
+                         : contact::ForcedStatus::None;
+}
+
+ConceptPtr contactConcept(std::vector<analysis::ContactZone> zones, const analysis::ContactSettings& settings) {
+  auto c = std::make_shared<ContactConcept>();
+  c->zones = std::move(zones);
+  c->settings = settings;
+  return c;
+}
+
 ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
   const auto model = contactModel(k);
   const auto& mesh = model->mesh();
@@ -133,18 +148,10 @@ ConceptPtr defiContact(const Keywords& k, Session&, ConceptPtr) {
         zs.integration = contact::ContactIntegration::Nodes;  // 'AUTO', the validator allows nothing else
       }
     }
-    if (settings.continueFormulation) {
-      const std::string init = z.text("CONTACT_INIT");
-      zs.initialStatus = init == "OUI"   ? contact::ForcedStatus::Contact
-                         : init == "NON" ? contact::ForcedStatus::Separated
-                                         : contact::ForcedStatus::None;
-    }
+    if (settings.continueFormulation) zs.initialStatus = initialStatus(z);
     zones.push_back(std::move(zone));
   }
-  auto c = std::make_shared<ContactConcept>();
-  c->zones = std::move(zones);
-  c->settings = settings;
-  return c;
+  return contactConcept(std::move(zones), settings);
 }
 
 // DEFI_CONT, code_aster's newer spelling of mortar contact: LAC's terms
@@ -162,16 +169,10 @@ ConceptPtr defiCont(const Keywords& k, Session&, ConceptPtr) {
     auto& zs = zone.settings;
     zs.maxDistance = z.real("DIST_APPA");
     zs.statusCoefficient = positive(z, "COEF_CONT");
-    const std::string init = z.text("CONTACT_INIT");
-    zs.initialStatus = init == "OUI"   ? contact::ForcedStatus::Contact
-                       : init == "NON" ? contact::ForcedStatus::Separated
-                                       : contact::ForcedStatus::None;
+    zs.initialStatus = initialStatus(z);
     zones.push_back(std::move(zone));
   }
-  auto c = std::make_shared<ContactConcept>();
-  c->zones = std::move(zones);
-  c->settings = settings;
-  return c;
+  return contactConcept(std::move(zones), settings);
 }
 
 RegisterOperator reg("DEFI_CONTACT", defiContact);
