@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "contact/gap.hpp"
+#include "contact/vertex_blend.hpp"
 #include "fem/quadrature.hpp"
 
 namespace aster::contact {
@@ -120,6 +121,9 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     const MasterProjection mp = projectOnMaster(st.point, masters, options.projection);
     NodeGap ng;
     SmoothedGap sg;
+    VertexBlendGap vb;
+    Projection partnerProjection;
+    int partner = -1;  // a second segment at a kink (vertex_blend.hpp)
     if (mp.paired()) {
       if (patches) {
         sg = linearizeSmoothedGap(st.point, masters[mp.segment], (*patches)[mp.segment], mp.projection);
@@ -127,6 +131,11 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
       } else {
         ng = linearizeGap(st.point, masters[mp.segment], mp.projection);
         st.gap = ng.gap;
+        partner = vertexPartner(st.point, masters, mp.segment, mp.projection, options.projection, partnerProjection);
+        if (partner >= 0) {
+          vb = blendVertexGaps(ng, linearizeGap(st.point, masters[partner], partnerProjection));
+          st.gap = vb.gap;
+        }
       }
       st.masterSegment = mp.segment;
       st.masterXi = mp.projection.xi;
@@ -149,17 +158,24 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
       continue;
     }
     // Map of the gap's DOFs q = (x_s, master or patch nodes) to cell DOFs: x_s = sum Ns_a x_a.
-    const int nq = static_cast<int>(patches ? sg.gradient.size() : ng.gradient.size());
+    // (At a kink, q = (x_s, the segment's nodes, its partner's nodes).)
+    const bool blended = partner >= 0;
+    const int nq = static_cast<int>(patches ? sg.gradient.size() : blended ? vb.gradient.size() : ng.gradient.size());
     // The force direction f: the gap's variation, or along the smoothed normal (smoothed_normal.hpp).
-    auto dg = [&](int p) { return patches ? sg.gradient(p) : ng.gradient(p); };
-    auto f = [&](int p) { return patches ? sg.force(p) : ng.gradient(p); };
-    auto df = [&](int p, int r) { return patches ? sg.forceJacobian(p, r) : ng.hessian(p, r); };
+    auto dg = [&](int p) { return patches ? sg.gradient(p) : blended ? vb.gradient(p) : ng.gradient(p); };
+    auto f = [&](int p) { return patches ? sg.force(p) : blended ? vb.gradient(p) : ng.gradient(p); };
+    auto df = [&](int p, int r) {
+      return patches ? sg.forceJacobian(p, r) : blended ? vb.hessian(p, r) : ng.hessian(p, r);
+    };
     const int mo = out.masterOffsets[mp.segment];
+    const int own = 2 * masters[mp.segment].nodes();  // the segment's entries of q after x_s
     auto scatter = [&](int p, auto&& f) {
       if (p < 2) {
         for (int a = 0; a < ns; ++a) f(2 * a + p, sh.N(a));
-      } else {
+      } else if (!blended || p < 2 + own) {
         f(mo + p - 2, 1.0);
+      } else {
+        f(out.masterOffsets[partner] + p - 2 - own, 1.0);
       }
     };
     // The force factor of dg: lambda + rho g (augmented Lagrangian), lambda (penalisation).
