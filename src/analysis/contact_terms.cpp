@@ -25,20 +25,22 @@ using detail::ContactBase;
 using detail::kContNoeu;
 
 // ---------------------------------------------------------------- DISCRETE
-// A slave node over a GROOVE of the master (two master cells meeting at a
-// vertex, the second rising towards the slave side of the first) is held by
-// both cells' half-planes: pressed into the groove it sits on the vertex and
-// the master pushes it along any combination of the two normals. One
-// condition against the nearest cell alone would push it along that cell's
-// normal, across the vertex, then along the other's, from one Newton
-// iteration to the next (the closest point jumps at the vertex). So a node
-// whose nearest cell has a neighbour forming a groove at the end nearest to
-// its projection carries a second condition, against that neighbour (the gap
-// to its line past the vertex when clamped there): two multipliers, each in
-// the active set. The two slots keep their master cells from one iteration
-// to the next while these stay paired, so that each multiplier stays the
-// force of one cell. A node without a second cell has its second multiplier
-// fixed to 0 (fixedUnknowns()): the system is the one-condition system.
+// A slave node pressed into a GROOVE of the master (two master cells meeting
+// at a vertex, the second rising towards the slave side of the first) sits on
+// the vertex, and the master pushes it along any combination of the two
+// normals. One condition against the nearest cell alone pushes it along that
+// cell's normal, across the vertex, then along the other's, from one Newton
+// iteration to the next: the nearest cell alternates and Newton's method
+// cycles. So when a node's nearest cell goes back to the one before (A, B,
+// A) and A and B form a groove at the vertex nearest to its projection, the
+// node is held by both: a second condition against the other cell (the gap
+// to its line past the vertex when clamped there), a second multiplier, each
+// in the active set. It stays held while its nearest cell is A or B. A node
+// held by both conditions keeps each cell in its slot (each multiplier stays
+// the force of one cell); a node with one active condition moves it to the
+// nearest cell, as with one condition per node. A node without a second cell
+// has its second multiplier fixed to 0 (fixedUnknowns(), an element of its
+// own): the system is then the one-condition system, iterate for iterate.
 class DiscreteContact final : public ContactBase {
  public:
   DiscreteContact(const MechanicalSystem& system, std::vector<ContactZone> zones, const ContactSettings& settings)
@@ -59,7 +61,7 @@ class DiscreteContact final : public ContactBase {
             seen[n] = 1;
             if (!(share[n] > 0))
               throw Error("contact: slave node " + mesh_.nodeName(n) + " has no share of the slave length");
-            nodes_.push_back({n, static_cast<int>(z), {-1, -1}, {}, share[n]});
+            nodes_.push_back({n, static_cast<int>(z), {-1, -1}, {}, share[n], {-1, -1}, {-1, -1}});
           }
       // Master cells meeting at each vertex (a line: two at most are neighbours).
       const auto& cells = zones_[z].masterCells;
@@ -92,21 +94,44 @@ class DiscreteContact final : public ContactBase {
       const auto p = contact::projectOnMaster(x, m, projections_[sn.zone]);
       std::array<int, 2> seg = {p.segment, -1};
       std::array<contact::Projection, 2> proj = {p.projection, {}};
-      if (p.paired()) {
+      // The nearest cell going back to the one before (A, B, A): the node
+      // is caught between A and B, which hold it together from now on.
+      if (p.segment != sn.nearest[0]) {
+        if (p.segment >= 0 && p.segment == sn.nearest[1]) sn.held = {p.segment, sn.nearest[0]};
+        sn.nearest = {p.segment, sn.nearest[0]};
+      }
+      if (p.segment != sn.held[0] && p.segment != sn.held[1]) sn.held = {-1, -1};
+      if (p.paired() && sn.held[0] >= 0) {
         seg[1] = grooveNeighbour(sn.zone, p.segment, p.projection.xi, m);
+        if (seg[1] != sn.held[0] && seg[1] != sn.held[1]) seg[1] = -1;
         if (seg[1] >= 0) {
           proj[1] = contact::projectOnSegment(x, m[seg[1]], projections_[sn.zone]);
           if (proj[1].status == contact::ProjectionStatus::Outside) seg[1] = -1;
         }
-        // Each slot keeps its master cell while that cell stays paired.
-        if (seg[0] == sn.segment[1] || (seg[1] >= 0 && seg[1] == sn.segment[0])) {
+      }
+      // Which slot carries which cell: a node held by both conditions keeps
+      // them in their slots while it stays between the same two cells; a node
+      // held by one condition keeps it in its slot and moves it to the nearest
+      // cell (sliding over a vertex, the force goes on from one cell to the next).
+      const bool a0 = active_[slot(i, 0)], a1 = active_[slot(i, 1)];
+      int follows = -1;  // the slot that follows the nearest cell with its multiplier
+      if (a0 && a1 && p.paired() &&
+          ((seg[0] == sn.segment[0] && seg[1] == sn.segment[1]) || (seg[0] == sn.segment[1] && seg[1] == sn.segment[0]))) {
+        if (seg[0] != sn.segment[0]) {
+          std::swap(seg[0], seg[1]);
+          std::swap(proj[0], proj[1]);
+        }
+      } else if (a0 != a1 && p.paired()) {
+        follows = a0 ? 0 : 1;
+        if (follows == 1) {
           std::swap(seg[0], seg[1]);
           std::swap(proj[0], proj[1]);
         }
       }
       changed |= seg != sn.segment;
-      if (seg[1] != sn.segment[1]) active_[slot(i, 1)] = false;  // a new second condition starts inactive
-      if (p.paired() && seg[0] < 0) active_[slot(i, 0)] = false;  // its cell left to slot 1's
+      // A cell that comes into slot 1 starts inactive there, unless slot 1 follows the nearest cell.
+      if (seg[1] != sn.segment[1] && follows != 1) active_[slot(i, 1)] = false;
+      if (seg[0] != sn.segment[0] && follows == 1) active_[slot(i, 0)] = false;
       sn.segment = seg;
       sn.projection = proj;
       // As code_aster's CONTACT_INIT='INTERPENETRE': nodes touching (to
@@ -211,6 +236,8 @@ class DiscreteContact final : public ContactBase {
     std::array<int, 2> segment;  // per slot: index in the zone's master cells, -1 when none
     std::array<contact::Projection, 2> projection;
     double share;  // int N_i dGamma_0 over the zone's slave cells
+    std::array<int, 2> nearest{{-1, -1}};  // the nearest cell at the last update, and the one before it
+    std::array<int, 2> held{{-1, -1}};     // the two cells of a groove that hold the node (-1: none)
   };
   std::size_t slot(std::size_t i, int k) const { return k * nodes_.size() + i; }
   int unknown(std::size_t i, int k) const { return first_ + static_cast<int>(slot(i, k)); }

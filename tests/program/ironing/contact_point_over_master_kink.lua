@@ -1,24 +1,24 @@
 -- expect-exit: 0
 -- expect-output: KINK: every check passed
--- A known failure (issue 23, found by ironing.lua), registered DISABLED: the
--- smallest case of a contact point paired alone right above a master node.
+-- A slave point right above a master kink (issue 23, found by ironing.lua).
 -- An iron [-0.5, 0.5] x [1, 1.5] (E = 100, NU = 0.3, D_PLAN, ELAS / PETIT) is
 -- pressed by DY = -0.05 on its top into a slab [-1, 1] x [0, 1] of two QUAD4
 -- (bottom clamped), frictionless, the iron's bottom the slave, in one step.
--- The slab's top node N5 at x = 0 sinks most: its top has a kink there, and
+-- The slab's top node N5 at x = 0 sinks most: its top is a groove there, and
 -- the slave point above it sees two master segments. That point is
 --   - CONTINUE's middle Gauss point (3 per cell, the default) when the iron's
---     bottom is one SEG2 [-0.5, 0.5] (kink_1.mail);
---   - DISCRETE's slave node N11 at x = 0 when it is two SEG2 (kink_2.mail).
--- Both cycle in Newton's method with period 2 (the same residual, 2.7e-2, at
--- every iteration from the 6th: the point's projection jumps from one master
--- segment to the other) and never converge, even with the step cut 3 times;
--- with the iron moved by DX = 1e-3 the cycle has two residuals, 2.70e-2 and
--- 2.71e-2, and still does not converge; by DX = 0.05 both converge in 4
--- iterations. CONTINUE converges on kink_2.mail (no Gauss point at x = 0),
--- with ORDRE_INT = 4, and LAC converges on both. What should hold: both
--- converge; then, the problem being symmetric about x = 0, the horizontal
--- force on the iron is zero and the reactions of the two bodies balance.
+--     bottom is one SEG2 [-0.5, 0.5] (kink_1.mail): above the groove, it
+--     projects inside both segments, where the gap blends theirs
+--     (contact/vertex_blend.hpp);
+--   - DISCRETE's slave node N11 at x = 0 when it is two SEG2 (kink_2.mail):
+--     held in the groove by both segments (contact_terms.cpp).
+-- With one segment's gap alone both cycled in Newton's method with period 2
+-- (the residual 2.7e-2 at every iteration from the 6th: the point's
+-- projection jumped from one master segment to the other) and never
+-- converged, even with the step cut 3 times. Now CONTINUE converges in 3
+-- iterations, DISCRETE in 7. Checked: the problem being symmetric about
+-- x = 0, the horizontal force on the iron is zero and the reactions of the two
+-- bodies balance.
 DEBUT()
 MAT = DEFI_MATERIAU{ELAS = {E = 100.0, NU = 0.3}}
 L = DEFI_LIST_REEL{VALE = {0.0, 1.0}}
