@@ -343,7 +343,7 @@ class ContinueContact final : public ContactBase {
       for (int c : zones_[z].slaveCells) {
         const auto n = mesh_.cellNodes(c);
         const bool seg3 = mesh_.cellType(c) == mesh::CellType::SEG3;
-        SlaveCell sc{c, static_cast<int>(z), 2, {}, {}, true};
+        SlaveCell sc{c, static_cast<int>(z), 2, {}, {}, true, {}, {}};
         if (quadratic && seg3) sc.count = 3;
         double a[3] = {0, 0, 0};
         integrateOnSlave(
@@ -393,6 +393,7 @@ class ContinueContact final : public ContactBase {
   // Candidate masters of a slave cell: the segments its nodes and midpoints
   // project on (the nearest one when none is paired).
   bool update(const Eigen::VectorXd& U) override {
+    recordNearest_ = true;
     initialIteration_ = !started_;
     started_ = true;
     bool changed = false;
@@ -423,6 +424,9 @@ class ContinueContact final : public ContactBase {
         }
       }
       if (cand.empty()) cand.push_back(nearestSeg);
+      updateHolds(sc, lastNearest_.empty() ? nullptr : &lastNearest_[&sc - cells_.data()]);
+      for (const auto& h : sc.held)
+        if (h[0] >= 0) cand.insert(cand.end(), h.begin(), h.end());
       std::sort(cand.begin(), cand.end());
       cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
       changed |= cand != sc.candidates;
@@ -440,17 +444,24 @@ class ContinueContact final : public ContactBase {
                 linalg::SparseMatrix* K) const override {
     pointsInContact_ = 0;
     std::fill(lagsResidual_.begin(), lagsResidual_.end(), 0.0);
+    if (recordNearest_) lastNearest_.resize(cells_.size());
     int e = 0;
     for (const auto& sc : cells_) {
       if (sc.skip) continue;
       cellTerms(sc, U, initialIteration_);
       for (const auto& p : terms_.points) pointsInContact_ += p.status == contact::PointStatus::Contact;
+      if (recordNearest_) {
+        auto& n = lastNearest_[&sc - cells_.data()];
+        n.clear();
+        for (const auto& p : terms_.points) n.push_back(p.masterSegment >= 0 ? sc.candidates[p.masterSegment] : -1);
+      }
       for (int v = 0; v < sc.count; ++v) lagsResidual_[sc.lags[v]] += terms_.residual(terms_.lagrangeOffset + v);
       scaleMultiplierRows(sc);
       addLocal(cellDofs(sc), terms_.residual, r);
       if (K) pattern.addMatrix(firstElement + e, terms_.tangent.data(), K->valuePtr());
       ++e;
     }
+    recordNearest_ = false;
     residual_ = 0;
     for (std::size_t k = 0; k < lagsNodes_.size(); ++k)
       if (!fixed_[k]) residual_ = std::max(residual_, std::fabs(lagsResidual_[k]) / lagsShare_[k]);
@@ -467,7 +478,16 @@ class ContinueContact final : public ContactBase {
            " nodes, residual " + format::scientific(residual_, 2);
   }
   // CONTACT_INIT applies again when the first step is cut and restarted.
-  void saveStatus() override { savedStarted_ = started_; }
+  // Holds at a vertex (updateHolds) last one step: its points are free again
+  // at the next, until their nearest cell alternates again.
+  void saveStatus() override {
+    savedStarted_ = started_;
+    for (auto& sc : cells_) {
+      sc.nearest.clear();
+      sc.held.clear();
+    }
+    lastNearest_.clear();
+  }
   void restoreStatus() override { started_ = savedStarted_; }
 
   // LAGS_C joins DEPL at its nodes; the middle node of a SEG3 slave whose
@@ -516,6 +536,10 @@ class ContinueContact final : public ContactBase {
     int lags[3];  // their indices among this term's unknowns
     std::vector<int> candidates;
     bool skip;  // every LAGS_C node excluded (SANS_GROUP_NO): no contact on the cell
+    // Per integration point (zone master indices): the nearest master cell at
+    // the last two iterations where it changed, and the two cells that hold
+    // the point at their vertex (-1: none; contact/vertex_blend.hpp).
+    std::vector<std::array<int, 2>> nearest, held;
   };
   struct NodalState {
     bool contact = false;
@@ -586,6 +610,35 @@ class ContinueContact final : public ContactBase {
     for (int v = 0; v < sc.count; ++v) dofs.push_back(first_ + sc.lags[v]);
     return dofs;
   }
+  // A point whose nearest master cell goes back to the one before (A, B, A)
+  // from one iteration to the next is held at the vertex of A and B (if they
+  // share one) while its nearest cell is A or B (contact/vertex_blend.hpp):
+  // near a kink its force would otherwise jump from one cell's normal to the
+  // other's at every iteration.
+  void updateHolds(SlaveCell& sc, const std::vector<int>* nearest) const {
+    if (!nearest) return;
+    const std::size_t n = nearest->size();
+    sc.nearest.resize(n, {-1, -1});
+    sc.held.resize(n, {-1, -1});
+    const auto& cells = zones_[sc.zone].masterCells;
+    for (std::size_t k = 0; k < n; ++k) {
+      const int s = (*nearest)[k];
+      auto& h = sc.nearest[k];
+      auto& held = sc.held[k];
+      if (s != h[0]) {
+        if (s >= 0 && s == h[1] && h[0] >= 0 && shareVertex(cells[s], cells[h[0]])) held = {s, h[0]};
+        h = {s, h[0]};
+      }
+      if (s != held[0] && s != held[1]) held = {-1, -1};
+    }
+  }
+  bool shareVertex(int a, int b) const {
+    const auto na = mesh_.cellNodes(a), nb = mesh_.cellNodes(b);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        if (na[i] == nb[j]) return true;
+    return false;
+  }
   // LAGS_C of unknown k (stored as LAGS_C / S).
   double lags(int k, const Eigen::VectorXd& U) const { return lagsScale_[k] * U(first_ + k); }
   // terms_ (of cell sc) with respect to the unknowns LAGS_C / S, their equations times S.
@@ -612,6 +665,15 @@ class ContinueContact final : public ContactBase {
       slave.current.row(a) = position(nodes[a], &U).transpose();
     }
     for (int v = 0; v < sc.count; ++v) slave.lagsC(v) = lags(sc.lags[v], U);
+    for (const auto& h : sc.held) {
+      auto index = [&](int s) {
+        const auto it = std::find(sc.candidates.begin(), sc.candidates.end(), s);
+        return it == sc.candidates.end() ? -1 : static_cast<int>(it - sc.candidates.begin());
+      };
+      std::array<int, 2> k = {-1, -1};
+      if (h[0] >= 0 && index(h[0]) >= 0 && index(h[1]) >= 0) k = {index(h[0]), index(h[1])};
+      slave.held.push_back(k);
+    }
     std::vector<contact::Segment> m;
     for (int s : sc.candidates) m.push_back(segment(zones_[sc.zone].masterCells[s], &U));
     contact::ContinueOptions o = options_[sc.zone];
@@ -669,6 +731,8 @@ class ContinueContact final : public ContactBase {
   std::vector<char> fixed_;
   std::vector<std::pair<int, int>> pressureOf_;  // per mesh node: LAGS_C indices to average (-1: none)
   bool started_ = false, savedStarted_ = false, initialIteration_ = false;
+  mutable bool recordNearest_ = false;                  // the next assemble() records each point's nearest cell
+  mutable std::vector<std::vector<int>> lastNearest_;   // per cell, per point: zone master index (-1: none)
   mutable contact::ContinueCellTerms terms_;
   mutable std::vector<double> lagsResidual_;
   mutable int pointsInContact_ = 0, nodesInContact_ = 0;

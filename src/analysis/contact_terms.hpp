@@ -9,6 +9,11 @@
 // slave cells' points (CONTINUE) with the master in the current configuration
 // (update()), and the gap is linearized exactly, projection included: the
 // geometric loop is part of Newton's (code_aster's ALGO_RESO_GEOM='NEWTON').
+// At a master kink the nearest cell of a point can alternate between the two
+// cells of the vertex from one iteration to the next: such a point is held
+// (DISCRETE: by both cells' conditions; CONTINUE: at the vertex,
+// contact/vertex_blend.hpp); a CONTINUE point that projects inside both has
+// its gap blended.
 //
 // CONT_NOEU (outputFields), on every slave node (nodes of the slave cells):
 //   CONT  1 in contact, 0 not (DISCRETE: the active set; CONTINUE: the

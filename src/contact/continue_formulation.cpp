@@ -97,7 +97,8 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
   for (int i = 0; i < rule.size; ++i) {
     const double xi = rule.xi[i];
     const SegmentShape sh = segmentShape(slave.type, xi);
-    const Eigen::Vector2d dX = slave.reference.topRows(ns).transpose() * sh.dN.head(ns);
+    // (All three rows: a SEG2's third shape derivative is 0.)
+    const Eigen::Vector2d dX = slave.reference.transpose() * sh.dN;
     const double J0 = dX.norm();
     if (!(J0 > 0)) throw Error("CONTINUE contact: degenerate slave cell (zero reference length)");
     const double W = rule.w[i] * J0;
@@ -123,8 +124,23 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     SmoothedGap sg;
     VertexBlendGap vb;
     Projection partnerProjection;
-    int partner = -1;  // a second segment at a kink (vertex_blend.hpp)
-    if (mp.paired()) {
+    int partner = -1;         // a second segment at a kink (vertex_blend.hpp)
+    int first = mp.segment;   // the segment whose nodes come first in the gap's variables
+    // A point held at a vertex while both its segments still take its projection.
+    const bool held = i < static_cast<int>(slave.held.size()) && slave.held[i][0] >= 0 &&
+                      mp.paired() &&
+                      projectOnSegment(st.point, masters[slave.held[i][0]], options.projection).status !=
+                          ProjectionStatus::Outside &&
+                      projectOnSegment(st.point, masters[slave.held[i][1]], options.projection).status !=
+                          ProjectionStatus::Outside;
+    if (held) {
+      first = slave.held[i][0];
+      partner = slave.held[i][1];
+      vb = heldVertexGap(st.point, masters[first], masters[partner]);
+      st.gap = vb.gap;
+      st.masterSegment = mp.segment;
+      st.masterXi = mp.projection.xi;
+    } else if (mp.paired()) {
       if (patches) {
         sg = linearizeSmoothedGap(st.point, masters[mp.segment], (*patches)[mp.segment], mp.projection);
         st.gap = sg.gap;
@@ -160,15 +176,15 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     // Map of the gap's DOFs q = (x_s, master or patch nodes) to cell DOFs: x_s = sum Ns_a x_a.
     // (At a kink, q = (x_s, the segment's nodes, its partner's nodes).)
     const bool blended = partner >= 0;
-    const int nq = static_cast<int>(patches ? sg.gradient.size() : blended ? vb.gradient.size() : ng.gradient.size());
+    const int nq = static_cast<int>(blended ? vb.gradient.size() : patches ? sg.gradient.size() : ng.gradient.size());
     // The force direction f: the gap's variation, or along the smoothed normal (smoothed_normal.hpp).
-    auto dg = [&](int p) { return patches ? sg.gradient(p) : blended ? vb.gradient(p) : ng.gradient(p); };
-    auto f = [&](int p) { return patches ? sg.force(p) : blended ? vb.gradient(p) : ng.gradient(p); };
+    auto dg = [&](int p) { return blended ? vb.gradient(p) : patches ? sg.gradient(p) : ng.gradient(p); };
+    auto f = [&](int p) { return blended ? vb.gradient(p) : patches ? sg.force(p) : ng.gradient(p); };
     auto df = [&](int p, int r) {
-      return patches ? sg.forceJacobian(p, r) : blended ? vb.hessian(p, r) : ng.hessian(p, r);
+      return blended ? vb.hessian(p, r) : patches ? sg.forceJacobian(p, r) : ng.hessian(p, r);
     };
-    const int mo = out.masterOffsets[mp.segment];
-    const int own = 2 * masters[mp.segment].nodes();  // the segment's entries of q after x_s
+    const int mo = out.masterOffsets[first];
+    const int own = 2 * masters[first].nodes();  // the segment's entries of q after x_s
     auto scatter = [&](int p, auto&& f) {
       if (p < 2) {
         for (int a = 0; a < ns; ++a) f(2 * a + p, sh.N(a));

@@ -3,16 +3,15 @@
 
 #include <limits>
 
+#include "contact/jet.hpp"
+
 namespace aster::contact {
 
 namespace {
 
 bool shareNode(const Segment& a, const Segment& b) {
-  // The vertices (a middle node is never shared by two master cells).
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j)
-      if (a.x.row(i) == b.x.row(j)) return true;
-  return false;
+  int i, j;
+  return sharedVertex(a, b, i, j);
 }
 
 // phi = 1 - xi^2 and s = phiA / (phiA + phiB) below a tiny sum: none (both at an end).
@@ -101,6 +100,51 @@ VertexBlendGap blendVertexGaps(const NodeGap& a, const NodeGap& b) {
   out.gradient = dgB + w * dd + d * w1 * ds;
   out.hessian = hgB + w * (hgA - hgB) + w1 * (ds * dd.transpose() + dd * ds.transpose()) +
                 d * (w2 * ds * ds.transpose() + w1 * hs);
+  return out;
+}
+
+bool sharedVertex(const Segment& a, const Segment& b, int& nodeA, int& nodeB) {
+  // The vertices (a middle node is never shared by two master cells).
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      if (a.x.row(i) == b.x.row(j)) {
+        nodeA = i;
+        nodeB = j;
+        return true;
+      }
+  return false;
+}
+
+VertexBlendGap heldVertexGap(const Eigen::Vector2d& xs, const Segment& a, const Segment& b) {
+  int ea, eb;
+  if (!sharedVertex(a, b, ea, eb)) throw Error("contact gap: a point held at a vertex needs two segments sharing a node");
+  constexpr int N = 2 + 2 * 3 + 2 * 3;  // the largest q: two SEG3
+  using J = Jet<N>;
+  using V = JetVec2<N>;
+  const int na = 2 * a.nodes(), nb = 2 * b.nodes();
+  const V x{J::variable(xs(0), 0), J::variable(xs(1), 1)};
+  // The unit normal (c_y, -c_x) / |c| of segment s at its node e, its nodes the variables from `first` on.
+  auto normalAt = [](const Segment& s, int e, int first, V& node) {
+    const SegmentShape sh = segmentShape(s.type, e == 0 ? -1.0 : 1.0);
+    V c{J::constant(0), J::constant(0)};
+    for (int k = 0; k < s.nodes(); ++k) {
+      const V y{J::variable(s.x(k, 0), first + 2 * k), J::variable(s.x(k, 1), first + 2 * k + 1)};
+      c = c + J::constant(sh.dN(k)) * y;
+      if (k == e) node = y;
+    }
+    const J length = sqrt(dot(c, c));
+    return V{c.y / length, -c.x / length};
+  };
+  V v, unused;
+  const V nA = normalAt(a, ea, 2, v), nB = normalAt(b, eb, 2 + na, unused);
+  const V m = nA + nB;
+  const J g = dot(x - v, inverse(sqrt(dot(m, m))) * m);
+  const int n = 2 + na + nb;
+  VertexBlendGap out;
+  out.gap = g.v;
+  out.weight = 0.5;
+  out.gradient = g.g.head(n);
+  out.hessian = g.h.topLeftCorner(n, n);
   return out;
 }
 

@@ -58,6 +58,19 @@ struct VertexBlendGap {
 // The blended gap from the two linearized gaps (both Inside projections).
 VertexBlendGap blendVertexGaps(const NodeGap& a, const NodeGap& b);
 
+// A point HELD at the vertex of two segments (the caller's choice: a point
+// whose nearest segment alternates between them from one Newton iteration to
+// the next, whatever the region it lies in): the gap to the line through the
+// shared node v across the mean normal of the two segments there,
+//   g = (x_s - v) . n_v,   n_v = (n_A(v) + n_B(v)) / |n_A(v) + n_B(v)|,
+// each segment's normal at its end v (segment.hpp); q as above. Smooth in
+// every variable: the force of a held point is along n_v, along the bisector
+// of a symmetric kink, and the point may rest anywhere near the vertex. The
+// two segments must share a node.
+VertexBlendGap heldVertexGap(const Eigen::Vector2d& xs, const Segment& a, const Segment& b);
+// The node of `a` (0 or 1) that `b` shares, and b's; false when none.
+bool sharedVertex(const Segment& a, const Segment& b, int& nodeA, int& nodeB);
+
 // The gap of xs paired with masters[mp.segment]: blended when it has a vertex partner.
 double pairedGap(const Eigen::Vector2d& xs, const std::vector<Segment>& masters, const MasterProjection& mp,
                  const ProjectionOptions& options);

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "contact/vertex_blend.hpp"
+#include "core/error.hpp"
 
 using namespace aster::contact;
 using aster::fem::CellType;
@@ -148,4 +149,63 @@ TEST(VertexBlend, PartnersShareANodeAndBothProjectInside) {
   const std::vector<Segment> apart = {Segment::seg2({0, 0}, {-1, 0.2}), Segment::seg2({1, 0.2}, {0.0, 1e-9})};
   const MasterProjection mp = projectOnMaster(Vector2d(0.0, 0.1), apart);
   EXPECT_EQ(vertexPartner(Vector2d(0.0, 0.1), apart, mp.segment, mp.projection, {}, partner), -1);
+}
+
+TEST(VertexHold, VariationsMatchFiniteDifferences) {
+  // Variables moved one at a time: x_s, every node of A (its copy of the
+  // shared node included) and every node of B but its copy of the shared
+  // node (moving it alone would unshare them); straight and curved.
+  const std::vector<std::pair<Segment, Segment>> pairs = {
+      {Segment::seg2({0, 0}, {-1, 0.2}), Segment::seg2({1, 0.3}, {0, 0})},
+      {Segment::seg3({0, 0}, {-1, -0.3}, {-0.5, -0.1}), Segment::seg3({1, -0.2}, {0, 0}, {0.5, -0.05})}};
+  for (const auto& [a, b] : pairs) {
+    const Vector2d xs(0.03, -0.02);
+    const Eigen::VectorXd q = pack(xs, a, b);
+    const VertexBlendGap g0 = heldVertexGap(xs, a, b);
+    ASSERT_EQ(g0.gradient.size(), q.size());
+    const int sharedB = 2 + 2 * a.nodes() + 2;  // B's node 2 (index 1) is the shared one in both pairs
+    const double h = 1e-6;
+    for (int j = 0; j < q.size(); ++j) {
+      if (j == sharedB || j == sharedB + 1) continue;
+      Eigen::VectorXd qp = q, qm = q;
+      qp(j) += h;
+      qm(j) -= h;
+      Segment ap = a, am = a, bp = b, bm = b;
+      Vector2d xp, xm;
+      unpack(qp, xp, ap, bp);
+      unpack(qm, xm, am, bm);
+      if (j == 2 || j == 3) bp.x.row(1) = ap.x.row(0), bm.x.row(1) = am.x.row(0);  // A's node 1 is the shared one
+      // The shared node moved through A's copy: its derivative is the sum of both copies'.
+      const int k = (j == 2 || j == 3) ? sharedB + (j - 2) : -1;
+      const VertexBlendGap gp = heldVertexGap(xp, ap, bp), gm = heldVertexGap(xm, am, bm);
+      const double fd = (gp.gap - gm.gap) / (2 * h);
+      const double exact = g0.gradient(j) + (k >= 0 ? g0.gradient(k) : 0.0);
+      EXPECT_NEAR(fd, exact, 1e-8) << "variable " << j;
+      Eigen::VectorXd fdRow = (gp.gradient - gm.gradient) / (2 * h);
+      Eigen::VectorXd exactRow = g0.hessian.col(j) + (k >= 0 ? Eigen::VectorXd(g0.hessian.col(k)) : Eigen::VectorXd::Zero(q.size()));
+      for (int r = 0; r < q.size(); ++r) {
+        if (r == sharedB || r == sharedB + 1) continue;  // B's copy: compared through A's
+        const int rk = (r == 2 || r == 3) ? sharedB + (r - 2) : -1;
+        const double fdr = fdRow(r) + (rk >= 0 ? fdRow(rk) : 0.0);
+        const double exr = exactRow(r) + (rk >= 0 ? exactRow(rk) : 0.0);
+        EXPECT_NEAR(fdr, exr, 1e-6) << "variables " << r << ", " << j;
+      }
+    }
+    EXPECT_LE((g0.hessian - g0.hessian.transpose()).norm(), 1e-12);
+  }
+}
+
+TEST(VertexHold, TheMeanNormalAtTheVertex) {
+  // A symmetric groove: the held gap is the height above the vertex, its
+  // variation in x_s the vertical, wherever the point is (a line).
+  const auto m = groove(0.2);
+  for (const Vector2d& xs : {Vector2d(0, 0.05), Vector2d(0.3, -0.01), Vector2d(-0.2, 0.0)}) {
+    const VertexBlendGap g = heldVertexGap(xs, m[0], m[1]);
+    EXPECT_NEAR(g.gap, xs(1), 1e-15);
+    EXPECT_NEAR(g.gradient(0), 0, 1e-15);
+    EXPECT_NEAR(g.gradient(1), 1, 1e-15);
+  }
+  // Segments sharing no node: an error.
+  EXPECT_THROW(heldVertexGap(Vector2d(0, 0.1), Segment::seg2({0, 0}, {-1, 0.2}), Segment::seg2({1, 0.2}, {0, 1e-9})),
+               aster::Error);
 }
