@@ -13,6 +13,7 @@
 #include "contact/gap.hpp"
 #include "contact/projection.hpp"
 #include "contact/smoothed_normal.hpp"
+#include "contact/vertex_blend.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
 #include "core/number_format.hpp"
@@ -702,7 +703,7 @@ class ContinueContact final : public ContactBase {
                          : settings_.smoothNormals
                              ? contact::smoothedGap(position(sn.node, &U), m[sn.zone][p.segment],
                                                     patch(sn.zone, p.segment, U), p.projection.xi)
-                             : p.projection.gap;
+                             : contact::pairedGap(position(sn.node, &U), m[sn.zone], p, projections_[sn.zone]);
       if (!p.paired() || excluded_[sn.zone][sn.node]) {
         s.gap = gap;
         continue;

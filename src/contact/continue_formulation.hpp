@@ -59,7 +59,8 @@
 // symmetric. A point whose projection falls outside every master segment is
 // unpaired and treated as separated (its lambda is driven to 0).
 // At a master kink (vertex_blend.hpp): a point that projects inside two
-// segments sharing a node takes the blend of their gaps, and a point HELD at
+// segments sharing a node takes the blend of their gaps (without smoothed
+// normals; with them its gap is continuous already), and a point HELD at
 // their vertex (SlaveCell::held, LISSAGE or not) the gap across their mean
 // normal there, its force along that gap's variation; g, dg and d2g are then
 // over (x_s, one segment's nodes, the other's), the shared node in both
