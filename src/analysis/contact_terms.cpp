@@ -13,6 +13,7 @@
 #include "contact/gap.hpp"
 #include "contact/projection.hpp"
 #include "contact/smoothed_normal.hpp"
+#include "contact/vertex_blend.hpp"
 #include "core/error.hpp"
 #include "core/messages.hpp"
 #include "core/number_format.hpp"
@@ -25,6 +26,22 @@ using detail::ContactBase;
 using detail::kContNoeu;
 
 // ---------------------------------------------------------------- DISCRETE
+// A slave node pressed into a GROOVE of the master (two master cells meeting
+// at a vertex, the second rising towards the slave side of the first) sits on
+// the vertex, and the master pushes it along any combination of the two
+// normals. One condition against the nearest cell alone pushes it along that
+// cell's normal, across the vertex, then along the other's, from one Newton
+// iteration to the next: the nearest cell alternates and Newton's method
+// cycles. So when a node's nearest cell goes back to the one before (A, B,
+// A) and A and B form a groove at the vertex nearest to its projection, the
+// node is held by both: a second condition against the other cell (the gap
+// to its line past the vertex when clamped there), a second multiplier, each
+// in the active set. It stays held while its nearest cell is A or B. A node
+// held by both conditions keeps each cell in its slot (each multiplier stays
+// the force of one cell); a node with one active condition moves it to the
+// nearest cell, as with one condition per node. A node without a second cell
+// has its second multiplier fixed to 0 (fixedUnknowns(), an element of its
+// own): the system is then the one-condition system, iterate for iterate.
 class DiscreteContact final : public ContactBase {
  public:
   DiscreteContact(const MechanicalSystem& system, std::vector<ContactZone> zones, const ContactSettings& settings)
@@ -45,33 +62,94 @@ class DiscreteContact final : public ContactBase {
             seen[n] = 1;
             if (!(share[n] > 0))
               throw Error("contact: slave node " + mesh_.nodeName(n) + " has no share of the slave length");
-            nodes_.push_back({n, static_cast<int>(z), -1, contact::Projection{}, share[n]});
+            nodes_.push_back({n, static_cast<int>(z), {-1, -1}, {}, share[n], {-1, -1}, {-1, -1}});
           }
+      // Master cells meeting at each vertex (a line: two at most are neighbours).
+      const auto& cells = zones_[z].masterCells;
+      std::map<int, std::vector<int>> cellsAt;
+      for (std::size_t s = 0; s < cells.size(); ++s)
+        for (int e = 0; e < 2; ++e) cellsAt[mesh_.cellNodes(cells[s])[e]].push_back(static_cast<int>(s));
+      std::vector<std::array<int, 2>> next(cells.size(), {-1, -1});
+      for (std::size_t s = 0; s < cells.size(); ++s)
+        for (int e = 0; e < 2; ++e) {
+          const auto& around = cellsAt[mesh_.cellNodes(cells[s])[e]];
+          if (around.size() == 2) next[s][e] = around[0] == static_cast<int>(s) ? around[1] : around[0];
+        }
+      neighbours_.push_back(std::move(next));
     }
-    active_.assign(nodes_.size(), false);
+    active_.assign(2 * nodes_.size(), false);
   }
-  int unknownCount() const override { return static_cast<int>(nodes_.size()); }
+  // Per slave node: the multiplier of slot 0, then (after all of them) of slot 1.
+  int unknownCount() const override { return 2 * static_cast<int>(nodes_.size()); }
+  void fixedUnknowns(std::vector<int>& dofs) const override {
+    for (std::size_t i = 0; i < nodes_.size(); ++i)
+      if (nodes_[i].segment[1] < 0) dofs.push_back(unknown(i, 1));
+  }
 
   bool update(const Eigen::VectorXd& U) override {
     bool changed = false;
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
       auto& sn = nodes_[i];
       const auto m = masters(zones_[sn.zone], U);
-      const auto p = contact::projectOnMaster(position(sn.node, &U), m, projections_[sn.zone]);
-      changed |= p.segment != sn.segment;
-      sn.segment = p.segment;
-      sn.projection = p.projection;
+      const Eigen::Vector2d x = position(sn.node, &U);
+      const auto p = contact::projectOnMaster(x, m, projections_[sn.zone]);
+      std::array<int, 2> seg = {p.segment, -1};
+      std::array<contact::Projection, 2> proj = {p.projection, {}};
+      // The nearest cell going back to the one before (A, B, A): the node
+      // is caught between A and B, which hold it together from now on.
+      if (p.segment != sn.nearest[0]) {
+        if (p.segment >= 0 && p.segment == sn.nearest[1]) sn.held = {p.segment, sn.nearest[0]};
+        sn.nearest = {p.segment, sn.nearest[0]};
+      }
+      if (p.segment != sn.held[0] && p.segment != sn.held[1]) sn.held = {-1, -1};
+      if (p.paired() && sn.held[0] >= 0) {
+        seg[1] = grooveNeighbour(sn.zone, p.segment, p.projection.xi, m);
+        if (seg[1] != sn.held[0] && seg[1] != sn.held[1]) seg[1] = -1;
+        if (seg[1] >= 0) {
+          proj[1] = contact::projectOnSegment(x, m[seg[1]], projections_[sn.zone]);
+          if (proj[1].status == contact::ProjectionStatus::Outside) seg[1] = -1;
+        }
+      }
+      // Which slot carries which cell: a node held by both conditions keeps
+      // them in their slots while it stays between the same two cells; a node
+      // held by one condition keeps it in its slot and moves it to the nearest
+      // cell (sliding over a vertex, the force goes on from one cell to the next).
+      const bool a0 = active_[slot(i, 0)], a1 = active_[slot(i, 1)];
+      int follows = -1;  // the slot that follows the nearest cell with its multiplier
+      if (a0 && a1 && p.paired() &&
+          ((seg[0] == sn.segment[0] && seg[1] == sn.segment[1]) || (seg[0] == sn.segment[1] && seg[1] == sn.segment[0]))) {
+        if (seg[0] != sn.segment[0]) {
+          std::swap(seg[0], seg[1]);
+          std::swap(proj[0], proj[1]);
+        }
+      } else if (a0 != a1 && p.paired()) {
+        follows = a0 ? 0 : 1;
+        if (follows == 1) {
+          std::swap(seg[0], seg[1]);
+          std::swap(proj[0], proj[1]);
+        }
+      }
+      changed |= seg != sn.segment;
+      // A cell that comes into slot 1 starts inactive there, unless slot 1 follows the nearest cell.
+      if (seg[1] != sn.segment[1] && follows != 1) active_[slot(i, 1)] = false;
+      if (seg[0] != sn.segment[0] && follows == 1) active_[slot(i, 0)] = false;
+      sn.segment = seg;
+      sn.projection = proj;
       // As code_aster's CONTACT_INIT='INTERPENETRE': nodes touching (to
       // round-off) or penetrating at the start are active from the first iteration.
-      if (!started_ && p.paired() && contact::gapIsClosed(p.projection.gap, position(sn.node, &U), m[p.segment]))
-        active_[i] = true;
+      if (!started_ && p.paired() && contact::gapIsClosed(p.projection.gap, x, m[p.segment]))
+        active_[slot(i, 0)] = true;
     }
     started_ = true;
     return changed;
   }
 
+  // One element per node, then one per unused second multiplier (alone: its
+  // fixed value 0 leaves the rest of the system as with one condition per node).
   void elementDofs(fem::ElementDofs& out) const override {
     for (std::size_t i = 0; i < nodes_.size(); ++i) out.add(nodeDofs(i));
+    for (std::size_t i = 0; i < nodes_.size(); ++i)
+      if (nodes_[i].segment[1] < 0) out.add(std::vector<int>{unknown(i, 1)});
   }
 
   void assemble(const Eigen::VectorXd& U, Eigen::VectorXd& r, const fem::AssemblyPattern& pattern, int firstElement,
@@ -87,23 +165,43 @@ class DiscreteContact final : public ContactBase {
       addLocal(dofs, res, r);
       if (K) pattern.addMatrix(firstElement + static_cast<int>(i), Ke.data(), K->valuePtr());
     }
+    int e = firstElement + static_cast<int>(nodes_.size());
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      if (nodes_[i].segment[1] >= 0) continue;
+      const double S = scales_[nodes_[i].zone];
+      r(unknown(i, 1)) += S * U(unknown(i, 1));  // lambda = 0
+      if (K) pattern.addMatrix(e, &S, K->valuePtr());
+      ++e;
+    }
   }
 
   bool updateStatus(const Eigen::VectorXd& U) override {
-    std::vector<double> gaps(nodes_.size(), 1.0), lambdas(nodes_.size(), 0.0);
-    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const std::size_t n = nodes_.size();
+    std::vector<double> gaps(2 * n, 1.0), lambdas(2 * n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
       const auto& sn = nodes_[i];
-      lambdas[i] = multiplier(i, U);
-      const auto p =
-          contact::projectOnMaster(position(sn.node, &U), masters(zones_[sn.zone], U), projections_[sn.zone]);
-      gaps[i] = p.paired() ? p.projection.gap : 1.0;
+      const auto m = masters(zones_[sn.zone], U);
+      const Eigen::Vector2d x = position(sn.node, &U);
+      for (int k = 0; k < 2; ++k) lambdas[slot(i, k)] = multiplier(i, k, U);
+      if (sn.segment[1] < 0) {
+        // One condition: against the nearest cell at U.
+        const auto p = contact::projectOnMaster(x, m, projections_[sn.zone]);
+        gaps[slot(i, 0)] = p.paired() ? p.projection.gap : 1.0;
+        continue;
+      }
+      for (int k = 0; k < 2; ++k) {
+        if (sn.segment[k] < 0) continue;
+        const auto p = contact::projectOnSegment(x, m[sn.segment[k]], projections_[sn.zone]);
+        if (p.status != contact::ProjectionStatus::Outside) gaps[slot(i, k)] = p.gap;
+      }
     }
     return contact::updateActiveSet(gaps, lambdas, active_).changed();
   }
 
   std::string statusText() const override {
-    return std::to_string(std::count(active_.begin(), active_.end(), true)) + " active nodes, residual " +
-           format::scientific(residual_, 2);
+    int count = 0;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) count += active_[slot(i, 0)] || active_[slot(i, 1)];
+    return std::to_string(count) + " active nodes, residual " + format::scientific(residual_, 2);
   }
   void saveStatus() override { saved_ = active_; }
   void restoreStatus() override { active_ = saved_; }
@@ -124,8 +222,8 @@ class DiscreteContact final : public ContactBase {
     }
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
       const int n = nodes_[i].node;
-      f.values[5 * n] = active_[i] ? 1.0 : 0.0;
-      f.values[5 * n + 2] = multiplier(i, U) / nodes_[i].share;
+      f.values[5 * n] = active_[slot(i, 0)] || active_[slot(i, 1)] ? 1.0 : 0.0;
+      f.values[5 * n + 2] = (multiplier(i, 0, U) + multiplier(i, 1, U)) / nodes_[i].share;
     }
     nodalForces(r, f);
     printNodalTable(f);
@@ -136,59 +234,92 @@ class DiscreteContact final : public ContactBase {
   struct SlaveNode {
     int node;
     int zone;
-    int segment;  // index in the zone's master cells, -1 when unpaired
-    contact::Projection projection;
+    std::array<int, 2> segment;  // per slot: index in the zone's master cells, -1 when none
+    std::array<contact::Projection, 2> projection;
     double share;  // int N_i dGamma_0 over the zone's slave cells
+    std::array<int, 2> nearest{{-1, -1}};  // the nearest cell at the last update, and the one before it
+    std::array<int, 2> held{{-1, -1}};     // the two cells of a groove that hold the node (-1: none)
   };
+  std::size_t slot(std::size_t i, int k) const { return k * nodes_.size() + i; }
+  int unknown(std::size_t i, int k) const { return first_ + static_cast<int>(slot(i, k)); }
+  // The cell forming a groove with master cell s (zone z) at its end nearest
+  // to xi: the neighbour there whose other vertex lies on the slave side of s
+  // (beyond round-off of the angle); -1 when none.
+  int grooveNeighbour(int z, int s, double xi, const std::vector<contact::Segment>& m) const {
+    const int e = xi >= 0 ? 1 : 0;
+    const int t = neighbours_[z][s][e];
+    if (t < 0) return -1;
+    const Eigen::Vector2d v = m[s].x.row(e).transpose();
+    const Eigen::Vector2d n = contact::segmentFrame(m[s], e == 1 ? 1.0 : -1.0).normal;
+    const int shared = m[t].x.row(0).transpose() == v ? 0 : 1;
+    const Eigen::Vector2d far = m[t].x.row(1 - shared).transpose() - v;
+    return n.dot(far) > 1e-8 * far.norm() ? t : -1;
+  }
   std::vector<int> nodeDofs(std::size_t i) const {
     const auto& sn = nodes_[i];
     std::vector<int> dofs;
     system_.dofMap().appendNodeDofs(&sn.node, &sn.node + 1, 2, dofs);
-    if (sn.segment >= 0) appendDofs(zones_[sn.zone].masterCells[sn.segment], dofs);
-    dofs.push_back(first_ + static_cast<int>(i));
+    for (int k = 0; k < 2; ++k)
+      if (sn.segment[k] >= 0) appendDofs(zones_[sn.zone].masterCells[sn.segment[k]], dofs);
+    dofs.push_back(unknown(i, 0));
+    if (sn.segment[1] >= 0) dofs.push_back(unknown(i, 1));
     return dofs;
   }
-  // Node i's multiplier lambda (its unknown is lambda / S).
-  double multiplier(std::size_t i, const Eigen::VectorXd& U) const {
-    return scales_[nodes_[i].zone] * U(first_ + static_cast<int>(i));
+  // Node i's multiplier lambda of slot k (its unknown is lambda / S).
+  double multiplier(std::size_t i, int k, const Eigen::VectorXd& U) const {
+    return scales_[nodes_[i].zone] * U(unknown(i, k));
   }
   // Residual and tangent of node i (layout of nodeDofs), with respect to its
-  // unknown lambda / S and its equation times S (contact_terms.hpp), and the
-  // violation of its contact condition in length units (statusText()).
+  // unknowns lambda / S and their equations times S (contact_terms.hpp), and
+  // the violation of its contact conditions in length units (statusText()).
   void nodeTerms(std::size_t i, const Eigen::VectorXd& U, Eigen::VectorXd& res, Eigen::MatrixXd& Ke,
                  double& violation) const {
     const auto& sn = nodes_[i];
     const int m = static_cast<int>(nodeDofs(i).size());
     const double S = scales_[sn.zone];
-    const double lambda = multiplier(i, U);
     res.setZero(m);
     Ke.setZero(m, m);
     violation = 0;
-    if (sn.segment >= 0) {
-      const auto seg = segment(zones_[sn.zone].masterCells[sn.segment], &U);
-      const auto gap = contact::linearizeGap(position(sn.node, &U), seg, sn.projection);
-      const double k = zones_[sn.zone].settings.penalty * sn.share;
-      const auto t = contact::discreteNodeTerms(gap, lambda, active_[i], k);
-      const int q = m - 1;
-      res.head(q) = t.residualU.head(q);
-      Ke.topLeftCorner(q, q) = t.tangentUU.topLeftCorner(q, q);
-      if (active_[i]) {
+    const int slots = sn.segment[1] >= 0 ? 2 : 1;  // an unused second multiplier has an element of its own
+    int offset = 2;  // first entry of the slot's master nodes
+    for (int k = 0; k < slots; ++k) {
+      const int q = m - slots + k;  // the slot's multiplier entry
+      const double lambda = multiplier(i, k, U);
+      const bool active = active_[slot(i, k)];
+      if (sn.segment[k] < 0) {
+        res(q) = lambda;  // unpaired: lambda = 0
+        Ke(q, q) = S;
+        continue;
+      }
+      const auto seg = segment(zones_[sn.zone].masterCells[sn.segment[k]], &U);
+      const auto gap = contact::linearizeGap(position(sn.node, &U), seg, sn.projection[k]);
+      const double pk = zones_[sn.zone].settings.penalty * sn.share;
+      const auto t = contact::discreteNodeTerms(gap, lambda, active, pk);
+      // Gap variables (x_s, the cell's nodes) -> entries of the layout.
+      const int nq = static_cast<int>(gap.gradient.size());
+      auto entry = [&](int a) { return a < 2 ? a : offset + a - 2; };
+      for (int a = 0; a < nq; ++a) {
+        res(entry(a)) += t.residualU(a);
+        for (int b = 0; b < nq; ++b) Ke(entry(a), entry(b)) += t.tangentUU(a, b);
+      }
+      if (active) {
         res(q) = S * t.residualLambda;
-        Ke.col(q).head(q) = S * t.tangentULambda.head(q);
-        Ke.row(q).head(q) = S * t.tangentULambda.head(q).transpose();
+        for (int a = 0; a < nq; ++a) {
+          Ke(entry(a), q) += S * t.tangentULambda(a);
+          Ke(q, entry(a)) += S * t.tangentULambda(a);
+        }
         Ke(q, q) = S * S * t.tangentLambdaLambda;
       } else {
         res(q) = t.residualLambda;  // lambda = 0, i.e. S * unknown = 0
         Ke(q, q) = S * t.tangentLambdaLambda;
       }
-      violation = active_[i] ? std::fabs(t.residualLambda) : std::max(0.0, -gap.gap);
-    } else {
-      res(m - 1) = lambda;  // unpaired: lambda = 0
-      Ke(m - 1, m - 1) = S;
+      violation = std::max(violation, active ? std::fabs(t.residualLambda) : std::max(0.0, -gap.gap));
+      offset += nq - 2;
     }
   }
   std::vector<SlaveNode> nodes_;
-  std::vector<bool> active_, saved_;
+  std::vector<std::vector<std::array<int, 2>>> neighbours_;  // per zone, per master cell, per end: the cell there
+  std::vector<bool> active_, saved_;  // per slot (slot())
   bool started_ = false;
   mutable double residual_ = 0;
 };
@@ -213,7 +344,7 @@ class ContinueContact final : public ContactBase {
       for (int c : zones_[z].slaveCells) {
         const auto n = mesh_.cellNodes(c);
         const bool seg3 = mesh_.cellType(c) == mesh::CellType::SEG3;
-        SlaveCell sc{c, static_cast<int>(z), 2, {}, {}, true};
+        SlaveCell sc{c, static_cast<int>(z), 2, {}, {}, true, {}, {}};
         if (quadratic && seg3) sc.count = 3;
         double a[3] = {0, 0, 0};
         integrateOnSlave(
@@ -263,6 +394,7 @@ class ContinueContact final : public ContactBase {
   // Candidate masters of a slave cell: the segments its nodes and midpoints
   // project on (the nearest one when none is paired).
   bool update(const Eigen::VectorXd& U) override {
+    recordNearest_ = true;
     initialIteration_ = !started_;
     started_ = true;
     bool changed = false;
@@ -293,6 +425,9 @@ class ContinueContact final : public ContactBase {
         }
       }
       if (cand.empty()) cand.push_back(nearestSeg);
+      updateHolds(sc, lastNearest_.empty() ? nullptr : &lastNearest_[&sc - cells_.data()]);
+      for (const auto& h : sc.held)
+        if (h[0] >= 0) cand.insert(cand.end(), h.begin(), h.end());
       std::sort(cand.begin(), cand.end());
       cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
       changed |= cand != sc.candidates;
@@ -310,17 +445,24 @@ class ContinueContact final : public ContactBase {
                 linalg::SparseMatrix* K) const override {
     pointsInContact_ = 0;
     std::fill(lagsResidual_.begin(), lagsResidual_.end(), 0.0);
+    if (recordNearest_) lastNearest_.resize(cells_.size());
     int e = 0;
     for (const auto& sc : cells_) {
       if (sc.skip) continue;
       cellTerms(sc, U, initialIteration_);
       for (const auto& p : terms_.points) pointsInContact_ += p.status == contact::PointStatus::Contact;
+      if (recordNearest_) {
+        auto& n = lastNearest_[&sc - cells_.data()];
+        n.clear();
+        for (const auto& p : terms_.points) n.push_back(p.masterSegment >= 0 ? sc.candidates[p.masterSegment] : -1);
+      }
       for (int v = 0; v < sc.count; ++v) lagsResidual_[sc.lags[v]] += terms_.residual(terms_.lagrangeOffset + v);
       scaleMultiplierRows(sc);
       addLocal(cellDofs(sc), terms_.residual, r);
       if (K) pattern.addMatrix(firstElement + e, terms_.tangent.data(), K->valuePtr());
       ++e;
     }
+    recordNearest_ = false;
     residual_ = 0;
     for (std::size_t k = 0; k < lagsNodes_.size(); ++k)
       if (!fixed_[k]) residual_ = std::max(residual_, std::fabs(lagsResidual_[k]) / lagsShare_[k]);
@@ -337,7 +479,16 @@ class ContinueContact final : public ContactBase {
            " nodes, residual " + format::scientific(residual_, 2);
   }
   // CONTACT_INIT applies again when the first step is cut and restarted.
-  void saveStatus() override { savedStarted_ = started_; }
+  // Holds at a vertex (updateHolds) last one step: its points are free again
+  // at the next, until their nearest cell alternates again.
+  void saveStatus() override {
+    savedStarted_ = started_;
+    for (auto& sc : cells_) {
+      sc.nearest.clear();
+      sc.held.clear();
+    }
+    lastNearest_.clear();
+  }
   void restoreStatus() override { started_ = savedStarted_; }
 
   // LAGS_C joins DEPL at its nodes; the middle node of a SEG3 slave whose
@@ -386,6 +537,10 @@ class ContinueContact final : public ContactBase {
     int lags[3];  // their indices among this term's unknowns
     std::vector<int> candidates;
     bool skip;  // every LAGS_C node excluded (SANS_GROUP_NO): no contact on the cell
+    // Per integration point (zone master indices): the nearest master cell at
+    // the last two iterations where it changed, and the two cells that hold
+    // the point at their vertex (-1: none; contact/vertex_blend.hpp).
+    std::vector<std::array<int, 2>> nearest, held;
   };
   struct NodalState {
     bool contact = false;
@@ -456,6 +611,35 @@ class ContinueContact final : public ContactBase {
     for (int v = 0; v < sc.count; ++v) dofs.push_back(first_ + sc.lags[v]);
     return dofs;
   }
+  // A point whose nearest master cell goes back to the one before (A, B, A)
+  // from one iteration to the next is held at the vertex of A and B (if they
+  // share one) while its nearest cell is A or B (contact/vertex_blend.hpp):
+  // near a kink its force would otherwise jump from one cell's normal to the
+  // other's at every iteration.
+  void updateHolds(SlaveCell& sc, const std::vector<int>* nearest) const {
+    if (!nearest) return;
+    const std::size_t n = nearest->size();
+    sc.nearest.resize(n, {-1, -1});
+    sc.held.resize(n, {-1, -1});
+    const auto& cells = zones_[sc.zone].masterCells;
+    for (std::size_t k = 0; k < n; ++k) {
+      const int s = (*nearest)[k];
+      auto& h = sc.nearest[k];
+      auto& held = sc.held[k];
+      if (s != h[0]) {
+        if (s >= 0 && s == h[1] && h[0] >= 0 && shareVertex(cells[s], cells[h[0]])) held = {s, h[0]};
+        h = {s, h[0]};
+      }
+      if (s != held[0] && s != held[1]) held = {-1, -1};
+    }
+  }
+  bool shareVertex(int a, int b) const {
+    const auto na = mesh_.cellNodes(a), nb = mesh_.cellNodes(b);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        if (na[i] == nb[j]) return true;
+    return false;
+  }
   // LAGS_C of unknown k (stored as LAGS_C / S).
   double lags(int k, const Eigen::VectorXd& U) const { return lagsScale_[k] * U(first_ + k); }
   // terms_ (of cell sc) with respect to the unknowns LAGS_C / S, their equations times S.
@@ -482,6 +666,15 @@ class ContinueContact final : public ContactBase {
       slave.current.row(a) = position(nodes[a], &U).transpose();
     }
     for (int v = 0; v < sc.count; ++v) slave.lagsC(v) = lags(sc.lags[v], U);
+    for (const auto& h : sc.held) {
+      auto index = [&](int s) {
+        const auto it = std::find(sc.candidates.begin(), sc.candidates.end(), s);
+        return it == sc.candidates.end() ? -1 : static_cast<int>(it - sc.candidates.begin());
+      };
+      std::array<int, 2> k = {-1, -1};
+      if (h[0] >= 0 && index(h[0]) >= 0 && index(h[1]) >= 0) k = {index(h[0]), index(h[1])};
+      slave.held.push_back(k);
+    }
     std::vector<contact::Segment> m;
     for (int s : sc.candidates) m.push_back(segment(zones_[sc.zone].masterCells[s], &U));
     contact::ContinueOptions o = options_[sc.zone];
@@ -510,7 +703,7 @@ class ContinueContact final : public ContactBase {
                          : settings_.smoothNormals
                              ? contact::smoothedGap(position(sn.node, &U), m[sn.zone][p.segment],
                                                     patch(sn.zone, p.segment, U), p.projection.xi)
-                             : p.projection.gap;
+                             : contact::pairedGap(position(sn.node, &U), m[sn.zone], p, projections_[sn.zone]);
       if (!p.paired() || excluded_[sn.zone][sn.node]) {
         s.gap = gap;
         continue;
@@ -539,6 +732,8 @@ class ContinueContact final : public ContactBase {
   std::vector<char> fixed_;
   std::vector<std::pair<int, int>> pressureOf_;  // per mesh node: LAGS_C indices to average (-1: none)
   bool started_ = false, savedStarted_ = false, initialIteration_ = false;
+  mutable bool recordNearest_ = false;                  // the next assemble() records each point's nearest cell
+  mutable std::vector<std::vector<int>> lastNearest_;   // per cell, per point: zone master index (-1: none)
   mutable contact::ContinueCellTerms terms_;
   mutable std::vector<double> lagsResidual_;
   mutable int pointsInContact_ = 0, nodesInContact_ = 0;

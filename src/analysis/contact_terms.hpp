@@ -9,14 +9,21 @@
 // slave cells' points (CONTINUE) with the master in the current configuration
 // (update()), and the gap is linearized exactly, projection included: the
 // geometric loop is part of Newton's (code_aster's ALGO_RESO_GEOM='NEWTON').
+// At a master kink the nearest cell of a point can alternate between the two
+// cells of the vertex from one iteration to the next: such a point is held
+// (DISCRETE: by both cells' conditions; CONTINUE: at the vertex,
+// contact/vertex_blend.hpp); a CONTINUE point that projects inside both has
+// its gap blended.
 //
 // CONT_NOEU (outputFields), on every slave node (nodes of the slave cells):
 //   CONT  1 in contact, 0 not (DISCRETE: the active set; CONTINUE: the
 //         criterion of the integration points evaluated at the node);
-//   JEU   the gap of the node against the master, > 0 open (0 when unpaired);
+//   JEU   the gap of the node against the master, > 0 open (0 when unpaired;
+//         CONTINUE: blended where it projects inside two cells of a vertex);
 //   RN    the normal pressure, <= 0 in compression, per unit reference length:
-//         DISCRETE, the nodal multiplier over the node's share of the slave
-//         length A_i = int N_i dGamma_0; CONTINUE, LAGS_C at the node (the
+//         DISCRETE, the nodal multiplier (the sum of both when the node is
+//         held in a groove) over the node's share of the slave length
+//         A_i = int N_i dGamma_0; CONTINUE, LAGS_C at the node (the
 //         middle node of a SEG3 with linear LAGS_C: the mean of its ends);
 //   RNX, RNY  the nodal force the contact terms apply to the node (minus their
 //         part of the residual at its DX, DY): > 0 along the master normal

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "contact/gap.hpp"
+#include "contact/vertex_blend.hpp"
 #include "fem/quadrature.hpp"
 
 namespace aster::contact {
@@ -96,7 +97,8 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
   for (int i = 0; i < rule.size; ++i) {
     const double xi = rule.xi[i];
     const SegmentShape sh = segmentShape(slave.type, xi);
-    const Eigen::Vector2d dX = slave.reference.topRows(ns).transpose() * sh.dN.head(ns);
+    // (All three rows: a SEG2's third shape derivative is 0.)
+    const Eigen::Vector2d dX = slave.reference.transpose() * sh.dN;
     const double J0 = dX.norm();
     if (!(J0 > 0)) throw Error("CONTINUE contact: degenerate slave cell (zero reference length)");
     const double W = rule.w[i] * J0;
@@ -120,13 +122,36 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
     const MasterProjection mp = projectOnMaster(st.point, masters, options.projection);
     NodeGap ng;
     SmoothedGap sg;
-    if (mp.paired()) {
+    VertexBlendGap vb;
+    Projection partnerProjection;
+    int partner = -1;         // a second segment at a kink (vertex_blend.hpp)
+    int first = mp.segment;   // the segment whose nodes come first in the gap's variables
+    // A point held at a vertex while both its segments still take its projection.
+    const bool held = i < static_cast<int>(slave.held.size()) && slave.held[i][0] >= 0 &&
+                      mp.paired() &&
+                      projectOnSegment(st.point, masters[slave.held[i][0]], options.projection).status !=
+                          ProjectionStatus::Outside &&
+                      projectOnSegment(st.point, masters[slave.held[i][1]], options.projection).status !=
+                          ProjectionStatus::Outside;
+    if (held) {
+      first = slave.held[i][0];
+      partner = slave.held[i][1];
+      vb = heldVertexGap(st.point, masters[first], masters[partner]);
+      st.gap = vb.gap;
+      st.masterSegment = mp.segment;
+      st.masterXi = mp.projection.xi;
+    } else if (mp.paired()) {
       if (patches) {
         sg = linearizeSmoothedGap(st.point, masters[mp.segment], (*patches)[mp.segment], mp.projection);
         st.gap = sg.gap;
       } else {
         ng = linearizeGap(st.point, masters[mp.segment], mp.projection);
         st.gap = ng.gap;
+        partner = vertexPartner(st.point, masters, mp.segment, mp.projection, options.projection, partnerProjection);
+        if (partner >= 0) {
+          vb = blendVertexGaps(ng, linearizeGap(st.point, masters[partner], partnerProjection));
+          st.gap = vb.gap;
+        }
       }
       st.masterSegment = mp.segment;
       st.masterXi = mp.projection.xi;
@@ -149,17 +174,24 @@ void continueCellTerms(const SlaveCell& slave, const std::vector<Segment>& maste
       continue;
     }
     // Map of the gap's DOFs q = (x_s, master or patch nodes) to cell DOFs: x_s = sum Ns_a x_a.
-    const int nq = static_cast<int>(patches ? sg.gradient.size() : ng.gradient.size());
+    // (At a kink, q = (x_s, the segment's nodes, its partner's nodes).)
+    const bool blended = partner >= 0;
+    const int nq = static_cast<int>(blended ? vb.gradient.size() : patches ? sg.gradient.size() : ng.gradient.size());
     // The force direction f: the gap's variation, or along the smoothed normal (smoothed_normal.hpp).
-    auto dg = [&](int p) { return patches ? sg.gradient(p) : ng.gradient(p); };
-    auto f = [&](int p) { return patches ? sg.force(p) : ng.gradient(p); };
-    auto df = [&](int p, int r) { return patches ? sg.forceJacobian(p, r) : ng.hessian(p, r); };
-    const int mo = out.masterOffsets[mp.segment];
+    auto dg = [&](int p) { return blended ? vb.gradient(p) : patches ? sg.gradient(p) : ng.gradient(p); };
+    auto f = [&](int p) { return blended ? vb.gradient(p) : patches ? sg.force(p) : ng.gradient(p); };
+    auto df = [&](int p, int r) {
+      return blended ? vb.hessian(p, r) : patches ? sg.forceJacobian(p, r) : ng.hessian(p, r);
+    };
+    const int mo = out.masterOffsets[first];
+    const int own = 2 * masters[first].nodes();  // the segment's entries of q after x_s
     auto scatter = [&](int p, auto&& f) {
       if (p < 2) {
         for (int a = 0; a < ns; ++a) f(2 * a + p, sh.N(a));
-      } else {
+      } else if (!blended || p < 2 + own) {
         f(mo + p - 2, 1.0);
+      } else {
+        f(out.masterOffsets[partner] + p - 2 - own, 1.0);
       }
     };
     // The force factor of dg: lambda + rho g (augmented Lagrangian), lambda (penalisation).

@@ -58,6 +58,13 @@
 // including the projection and master curvature terms (gap.hpp), hence
 // symmetric. A point whose projection falls outside every master segment is
 // unpaired and treated as separated (its lambda is driven to 0).
+// At a master kink (vertex_blend.hpp): a point that projects inside two
+// segments sharing a node takes the blend of their gaps (without smoothed
+// normals; with them its gap is continuous already), and a point HELD at
+// their vertex (SlaveCell::held, LISSAGE or not) the gap across their mean
+// normal there, its force along that gap's variation; g, dg and d2g are then
+// over (x_s, one segment's nodes, the other's), the shared node in both
+// blocks (the layout has it once per segment block).
 //
 // Residual and tangent are the contributions to ADD to the global residual
 // R = F_int - F_ext and to its Jacobian. Cell DOF layout:
@@ -72,6 +79,7 @@
 // patch's nodes (its own nodes first) instead of its nodes alone. The tangent
 // is still the exact derivative of the residual, but not symmetric.
 #pragma once
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -115,6 +123,11 @@ struct SlaveCell {
   // LAGS_C at slave nodes 1, 2, 3; entry 2 (node 3) is used only when
   // multiplierCount() == 3, and ignored otherwise.
   Eigen::Vector3d lagsC = Eigen::Vector3d::Zero();
+  // Per integration point (in the rule's order; may be shorter or empty): the
+  // two master segments (indices into the master list, -1: none) that HOLD it
+  // at their shared vertex (vertex_blend.hpp, heldVertexGap), while its
+  // projection on each is inside or clamped.
+  std::vector<std::array<int, 2>> held;
 };
 
 // Number of LAGS_C unknowns of the cell (the last DOFs of its layout): 3 for a

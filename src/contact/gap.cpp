@@ -77,8 +77,8 @@ struct GapLinearizer {
     addSecondA(fa, d2x, Gzz);
     addSecondC(fc, Gzz);
 
-    Vq gq;
-    Mq gqq;
+    Vq gq, xq = Vq::Zero();
+    Mq gqq, xqq = Mq::Zero();
     if (xiFixed) {
       gq = Gz.template head<N>();
       gqq = Gzz.template topLeftCorner<N, N>();
@@ -103,10 +103,14 @@ struct GapLinearizer {
       gq = Gz.template head<N>() + Gz(N) * dxi;
       gqq = Gzz.template topLeftCorner<N, N>() + gqxi * dxi.transpose() + dxi * gqxi.transpose() +
             Gzz(N, N) * dxi * dxi.transpose() + Gz(N) * d2xi;
+      xq = dxi;
+      xqq = d2xi;
     }
     out.gap = G;
     out.gradient = gq;
     out.hessian = gqq;
+    out.xiGradient = xq;
+    out.xiHessian = xqq;
   }
 };
 

@@ -33,6 +33,8 @@ struct NodeGap {
   double gap = 0;
   GapVector gradient;  // dg/dq, size 2 + 2 * master nodes
   GapMatrix hessian;   // d2g/dq2, symmetric
+  GapVector xiGradient;  // dxi*/dq (zero when the projection is clamped)
+  GapMatrix xiHessian;   // d2xi*/dq2 (zero when the projection is clamped)
 };
 
 // The round-off of a gap of xs against `master`: 1e-12 times the largest

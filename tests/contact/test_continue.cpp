@@ -651,3 +651,91 @@ TEST(ContinueForcedStatus, OverridesTheCriterionOfPairedPoints) {
   continueCellTerms(s, masters, o, t);
   for (const auto& p : t.points) EXPECT_EQ(p.status, PointStatus::Unpaired);
 }
+
+// A slave cell over a groove of two master segments sharing the node (0, 0)
+// (contact/vertex_blend.hpp): its middle Gauss point above the vertex, first
+// where it projects inside both segments (the blended gap), then HELD at the
+// vertex (every point). The tangent against central finite differences of
+// the residual; the shared node moved as one (its two copies in the layout,
+// one per segment block, together: the sum of their columns and rows).
+TEST(Continue, TangentAtAMasterKink) {
+  const std::vector<Segment> masters = {Segment::seg2({0, 0}, {-1, 0.2}), Segment::seg2({1, 0.2}, {0, 0})};
+  SlaveCell s;
+  s.type = CellType::SEG2;
+  s.reference << -0.5, 0, 0.5, 0, 0, 0;
+  s.current << -0.5, 0.11, 0.5, 0.1, 0, 0;  // slightly tilted: the middle point off the bisector
+  s.lagsC << -2.0, -1.5, 0;
+  ContinueOptions o;
+  o.rho = 10;
+  for (int mode = 0; mode < 2; ++mode) {
+    if (mode == 1) s.held.assign(3, {0, 1});
+    ContinueCellTerms t0, tp, tm;
+    continueCellTerms(s, masters, o, t0);
+    ASSERT_EQ(t0.points[1].status, PointStatus::Contact);
+    const int n = t0.size();  // 4 slave + 4 + 4 master + 2 LAGS_C
+    ASSERT_EQ(n, 14);
+    // Independent variables: slave (0..3), A's far node (6, 7), B's far node
+    // (8, 9), the shared node (4, 5 = A's copy; 10, 11 = B's), LAGS_C (12, 13).
+    const std::vector<std::vector<int>> vars = {{0}, {1}, {2}, {3}, {6}, {7}, {8}, {9}, {4, 10}, {5, 11}, {12}, {13}};
+    auto apply = [&](const std::vector<int>& v, double h, SlaveCell& sc, std::vector<Segment>& m) {
+      for (int d : v) {
+        if (d < 4) sc.current(d / 2, d % 2) += h;
+        else if (d < 8) m[0].x((d - 4) / 2, d % 2) += h;
+        else if (d < 12) m[1].x((d - 8) / 2, d % 2) += h;
+        else sc.lagsC(d - 12) += h;
+      }
+    };
+    auto row = [&](const Eigen::VectorXd& r, const std::vector<int>& v) {
+      double sum = 0;
+      for (int d : v) sum += r(d);
+      return sum;
+    };
+    const double h = 1e-7;
+    double worst = 0;
+    for (const auto& vj : vars) {
+      SlaveCell sp = s, sm = s;
+      std::vector<Segment> mp = masters, mm = masters;
+      apply(vj, h, sp, mp);
+      apply(vj, -h, sm, mm);
+      continueCellTerms(sp, mp, o, tp);
+      continueCellTerms(sm, mm, o, tm);
+      ASSERT_EQ(statuses(tp), statuses(t0));
+      for (const auto& vi : vars) {
+        const double fd = (row(tp.residual, vi) - row(tm.residual, vi)) / (2 * h);
+        double exact = 0;
+        for (int i : vi)
+          for (int j : vj) exact += t0.tangent(i, j);
+        worst = std::max(worst, std::abs(fd - exact));
+      }
+    }
+    EXPECT_LE(worst, 1e-6 * std::max(1.0, t0.tangent.norm())) << "mode " << mode;
+  }
+}
+
+// Held at the vertex of a symmetric groove, a point off the axis (one Gauss
+// point, at x = 0.03, inside B only) has the height above the vertex as its
+// gap, and the contact force on the slave is vertical; free, it is B's
+// distance and its force along B's normal.
+TEST(Continue, HeldPointPushedAlongTheMeanNormal) {
+  const std::vector<Segment> masters = {Segment::seg2({0, 0}, {-1, 0.2}), Segment::seg2({1, 0.2}, {0, 0})};
+  SlaveCell s;
+  s.type = CellType::SEG2;
+  s.reference << -0.5, 0, 0.5, 0, 0, 0;
+  s.current << -0.47, 0.01, 0.53, 0.01, 0, 0;
+  s.lagsC << -3.0, -3.0, 0;
+  s.held = {{0, 1}};
+  ContinueOptions o;
+  o.gaussPoints = 1;
+  ContinueCellTerms t;
+  continueCellTerms(s, masters, o, t);
+  ASSERT_EQ(t.points[0].status, PointStatus::Contact);
+  EXPECT_NEAR(t.points[0].gap, 0.01, 1e-15);
+  EXPECT_NEAR(t.residual(0), 0, 1e-15);  // slave node 1 x
+  EXPECT_NEAR(t.residual(2), 0, 1e-15);  // slave node 2 x
+  EXPECT_LT(t.residual(1), 0);           // pushed up: the residual of the force is -f
+  s.held.clear();
+  continueCellTerms(s, masters, o, t);
+  const double c = 1 / std::sqrt(1.04);
+  EXPECT_NEAR(t.points[0].gap, (0.01 - 0.2 * 0.03) * c, 1e-15);  // B's line y = 0.2 x
+  EXPECT_GT(std::abs(t.residual(0)), 1e-3);
+}
