@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/additional_terms.hpp"
@@ -131,6 +132,17 @@ class ContactBase : public AdditionalTerms {
       const double J = (s.x.transpose() * sh.dN).norm();
       for (int a = 0; a < 3; ++a) out[a] += q.weights[i] * J * f(a, xi);
     }
+  }
+  // DEPL with one more component, `name`, of the given (node, value) pairs (0 elsewhere).
+  void appendComponent(mesh::NodalField& depl, const std::string& name,
+                       const std::vector<std::pair<int, double>>& nodeValues) const {
+    const int nc = static_cast<int>(depl.components.size());
+    std::vector<double> values(static_cast<std::size_t>(nc + 1) * mesh_.nodeCount(), 0.0);
+    for (int n = 0; n < mesh_.nodeCount(); ++n)
+      for (int c = 0; c < nc; ++c) values[n * (nc + 1) + c] = depl.values[n * nc + c];
+    for (const auto& [n, v] : nodeValues) values[n * (nc + 1) + nc] = v;
+    depl.components.push_back(name);
+    depl.values = std::move(values);
   }
   // The reaction of the terms at the slave nodes: RNX, RNY of CONT_NOEU.
   void nodalForces(const Eigen::VectorXd& r, mesh::NodalField& f) const {

@@ -494,19 +494,14 @@ class ContinueContact final : public ContactBase {
   // LAGS_C joins DEPL at its nodes; the middle node of a SEG3 slave whose
   // LAGS_C is linear shows the value of the linear pressure there.
   void extendDisplacement(const Eigen::VectorXd& U, mesh::NodalField& depl) const override {
-    const int nc = static_cast<int>(depl.components.size());
-    std::vector<double> values(static_cast<std::size_t>(nc + 1) * mesh_.nodeCount(), 0.0);
-    for (int n = 0; n < mesh_.nodeCount(); ++n)
-      for (int c = 0; c < nc; ++c) values[n * (nc + 1) + c] = depl.values[n * nc + c];
+    std::vector<std::pair<int, double>> lagsC;
     for (const auto& sc : cells_) {
       const auto nodes = mesh_.cellNodes(sc.cell);
       if (sc.count == 2 && nodes.size() == 3)
-        values[nodes[2] * (nc + 1) + nc] = 0.5 * (lags(sc.lags[0], U) + lags(sc.lags[1], U));
+        lagsC.push_back({nodes[2], 0.5 * (lags(sc.lags[0], U) + lags(sc.lags[1], U))});
     }
-    for (std::size_t k = 0; k < lagsNodes_.size(); ++k)
-      values[lagsNodes_[k] * (nc + 1) + nc] = lags(static_cast<int>(k), U);
-    depl.components.push_back("LAGS_C");
-    depl.values = std::move(values);
+    for (std::size_t k = 0; k < lagsNodes_.size(); ++k) lagsC.push_back({lagsNodes_[k], lags(static_cast<int>(k), U)});
+    appendComponent(depl, "LAGS_C", lagsC);
   }
 
   void outputFields(const Eigen::VectorXd& U, std::vector<mesh::NodalField>& fields) const override {

@@ -169,13 +169,9 @@ class MortarContact final : public ContactBase {
 
   // LAGS_C at every slave node: the multiplier field's value there.
   void extendDisplacement(const Eigen::VectorXd& U, mesh::NodalField& depl) const override {
-    const int nc = static_cast<int>(depl.components.size());
-    std::vector<double> values(static_cast<std::size_t>(nc + 1) * mesh_.nodeCount(), 0.0);
-    for (int n = 0; n < mesh_.nodeCount(); ++n)
-      for (int c = 0; c < nc; ++c) values[n * (nc + 1) + c] = depl.values[n * nc + c];
-    for (std::size_t j = 0; j < fine_.size(); ++j) values[fine_[j].node * (nc + 1) + nc] = nodalPressure(j, U);
-    depl.components.push_back("LAGS_C");
-    depl.values = std::move(values);
+    std::vector<std::pair<int, double>> lagsC;
+    for (std::size_t j = 0; j < fine_.size(); ++j) lagsC.push_back({fine_[j].node, nodalPressure(j, U)});
+    appendComponent(depl, "LAGS_C", lagsC);
   }
 
   // CONT_NOEU at every slave node: CONT 1 when a multiplier whose basis
