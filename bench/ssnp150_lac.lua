@@ -3,8 +3,9 @@
 -- increments) on meshes/ssnp150.geo's N x N QUAD8 grid (gmsh's .msh, bound to
 -- unit 20 on the command line), with BAS pressed on the parabola MAITRE by
 -- LAC contact (MODE = 'LAC'), or, for the time of the same mesh without
--- contact, with BAS given the exact displacement (MODE = 'SANS'; bench/run
--- sets MODE). Prints the L2 errors of U and of LAGS_C at the end.
+-- contact, with BAS loaded by the exact traction Pi.N that the contact
+-- transmits (MODE = 'SANS'; bench/run sets MODE): the same unknowns but LAGS_C,
+-- the same solution. Prints the L2 errors of U and of LAGS_C at the end.
 MODE = 'LAC'
 DEBUT()
 MAIL = LIRE_MAILLAGE{FORMAT = 'GMSH', UNITE = 20}
@@ -19,12 +20,12 @@ MMS = CALC_SOLU_MANU{DEPL = {DX = UX, DY = UY}, MATER = ACIER, MODELISATION = 'D
                      BORD = {{NOM = 'DROITE', NORMALE = {1, 0}}, {NOM = 'GAUCHE', NORMALE = {-1, 0}},
                              {NOM = 'BAS', NORMALE = {0, -1}, CONTACT = 'OUI'}}}
 RAMPE = DEFI_FONCTION{NOM_PARA = 'INST', VALE = {0, 0, 1, 1}, PROL_GAUCHE = 'LINEAIRE', PROL_DROITE = 'LINEAIRE'}
-DEPL_IMP = AFFE_CHAR_MECA_F{MODELE = MODELE, DDL_IMPO = {GROUP_MA = MODE == 'LAC' and 'HAUT' or {'HAUT', 'BAS'},
-                                                         DX = UX, DY = UY}}
+DEPL_IMP = AFFE_CHAR_MECA_F{MODELE = MODELE, DDL_IMPO = {GROUP_MA = 'HAUT', DX = UX, DY = UY}}
 FORC_SUR = AFFE_CHAR_MECA_F{MODELE = MODELE, FORCE_CONTOUR = {
   {GROUP_MA = 'DROITE', FX = MMS.DROITE.FX, FY = MMS.DROITE.FY},
   {GROUP_MA = 'GAUCHE', FX = MMS.GAUCHE.FX, FY = MMS.GAUCHE.FY},
-  {GROUP_MA = 'BAS', FX = MMS.BAS.FX_T, FY = MMS.BAS.FY_T}}}
+  MODE == 'LAC' and {GROUP_MA = 'BAS', FX = MMS.BAS.FX_T, FY = MMS.BAS.FY_T}  -- tangential: contact gives the rest
+                 or {GROUP_MA = 'BAS', FX = MMS.BAS.FX, FY = MMS.BAS.FY}}}
 FORC_VOL = AFFE_CHAR_MECA_F{MODELE = MODELE, FORCE_INTERNE = {
   GROUP_MA = 'SURFACE', FX = MMS.FORCE_INTERNE.FX, FY = MMS.FORCE_INTERNE.FY}}
 BLOCAGE = AFFE_CHAR_CINE{MODELE = MODELE, MECA_IMPO = {GROUP_MA = 'MAITRE', DX = 0.0, DY = 0.0}}
