@@ -129,25 +129,49 @@ int parallelFrontCholesky(int parts, int width, int m, double* block) {
 
 // A front of signed columns: its `width` pivot columns of the m x width block are
 // factorized in place, L(k,k) = sqrt|d| and sign[k] = sign d for each pivot d, the rows
-// below included (they become L's). The diagonal block column by column (these fronts
-// hold Lagrange multipliers, a few at the top of the tree), the rows below by dtrsm:
-// A21 = L21 S L11^T. Returns 0, or the 1-based column of a zero or non-finite pivot.
+// below included (they become L's). The diagonal block by panels of kSignedPanel columns:
+// each panel column by column, then the columns after it at once, C -= L_p S_p L_p^T, as
+// two dsyrk (the panel's + columns, then its - ones), so that the wide fronts at the top
+// of the tree (a contact surface's multipliers cross its separators) run at BLAS-3 speed;
+// the rows below by dtrsm: A21 = L21 S L11^T. Returns 0, or the 1-based column of a zero
+// or non-finite pivot.
+constexpr int kSignedPanel = 48;
 int signedFrontFactor(int width, int m, double* block, double* sign) {
-  for (int j = 0; j < width; ++j) {
-    double* col = block + static_cast<size_t>(j) * m;
-    const double d = col[j];
-    if (d == 0.0 || !std::isfinite(d)) return j + 1;
-    const double l = std::sqrt(std::abs(d));
-    sign[j] = d > 0 ? 1.0 : -1.0;
-    col[j] = l;
-    const double scale = 1.0 / (sign[j] * l);  // L(i,j) = a(i,j) / (S(j,j) L(j,j))
-    for (int i = j + 1; i < width; ++i) col[i] *= scale;
-    for (int k = j + 1; k < width; ++k) {
-      double* target = block + static_cast<size_t>(k) * m;
-      const double f = sign[j] * col[k];
-      if (f != 0.0)
-        for (int i = k; i < width; ++i) target[i] -= col[i] * f;
+  std::vector<double> positive, negative;
+  for (int j0 = 0; j0 < width; j0 += kSignedPanel) {
+    const int jb = std::min(kSignedPanel, width - j0), end = j0 + jb;
+    for (int j = j0; j < end; ++j) {
+      double* col = block + static_cast<size_t>(j) * m;
+      const double d = col[j];
+      if (d == 0.0 || !std::isfinite(d)) return j + 1;
+      const double l = std::sqrt(std::abs(d));
+      sign[j] = d > 0 ? 1.0 : -1.0;
+      col[j] = l;
+      const double scale = 1.0 / (sign[j] * l);  // L(i,j) = a(i,j) / (S(j,j) L(j,j))
+      for (int i = j + 1; i < width; ++i) col[i] *= scale;
+      for (int k = j + 1; k < end; ++k) {
+        double* target = block + static_cast<size_t>(k) * m;
+        const double f = sign[j] * col[k];
+        if (f != 0.0)
+          for (int i = k; i < width; ++i) target[i] -= col[i] * f;
+      }
     }
+    const int r = width - end;
+    if (r <= 0) continue;
+    // The panel's rows below it, split by sign: C -= L+ L+^T - L- L-^T.
+    int np = 0, nq = 0;
+    positive.resize(static_cast<size_t>(r) * jb);
+    negative.resize(static_cast<size_t>(r) * jb);
+    for (int j = j0; j < end; ++j) {
+      const double* col = block + static_cast<size_t>(j) * m + end;
+      double* to = sign[j] > 0 ? positive.data() + static_cast<size_t>(np++) * r
+                               : negative.data() + static_cast<size_t>(nq++) * r;
+      std::copy(col, col + r, to);
+    }
+    double* trailing = block + end + static_cast<size_t>(end) * m;
+    const double minusOne = -1.0, plusOne = 1.0;
+    if (np > 0) dsyrk_("L", "N", &r, &np, &minusOne, positive.data(), &r, &plusOne, trailing, &m);
+    if (nq > 0) dsyrk_("L", "N", &r, &nq, &plusOne, negative.data(), &r, &plusOne, trailing, &m);
   }
   const int u = m - width;
   if (u > 0) {

@@ -231,6 +231,50 @@ TEST(MultifrontalCholesky, SignedPivotsFactorASaddlePoint) {
   }
 }
 
+// A front wider than a panel of the signed factorization (48 columns), its multipliers
+// inside it: a dense [K1 B^T C; B 0 0; C^T 0 K2], K = [K1 C; C^T K2] = G G^T + n I
+// positive definite, B (40 x 100) of full rank acting on K1's unknowns only, every entry
+// non-zero (one supernode of 190 columns), in that order: K1's 100 columns, the 40
+// multipliers, K2's 50 (the Schur complement of K2 stays positive definite). L S L^T
+// reproduces A to round-off and the signs are the inertia: - for the multipliers only.
+TEST(MultifrontalCholesky, SignedPanelsFactorAWideSaddlePointFront) {
+  const int nk = 150, n1 = 100, nc = 40, n = nk + nc;
+  Eigen::MatrixXd G(nk, nk), B(nc, n1);
+  for (int i = 0; i < nk; ++i)
+    for (int j = 0; j < nk; ++j) G(i, j) = std::sin(1.0 + i + 3.0 * j);
+  for (int i = 0; i < nc; ++i)
+    for (int j = 0; j < n1; ++j) B(i, j) = std::cos(2.0 + 5.0 * i + j) + (i == j ? 4.0 : 0.0);
+  const Eigen::MatrixXd K = G * G.transpose() + nk * Eigen::MatrixXd::Identity(nk, nk);
+  // Rows and columns: K1 (0 .. 99), the multipliers (100 .. 139), K2 (140 .. 189).
+  auto at = [&](int k) { return k < n1 ? k : k < n1 + nc ? -1 : k - nc; };  // index in K, -1: a multiplier
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (at(i) >= 0 && at(j) >= 0) dense(i, j) = K(at(i), at(j));
+      else if (at(i) < 0 && at(j) >= 0 && at(j) < n1) dense(i, j) = B(i - n1, at(j));
+      else if (at(j) < 0 && at(i) >= 0 && at(i) < n1) dense(i, j) = B(j - n1, at(i));
+    }
+  Triplets t;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) t.emplace_back(i, j, dense(i, j));  // the zeros stored too: one dense front
+  const SparseMatrix A = fromTriplets(n, t);
+  CholmodReference reference(A, CHOLMOD_NATURAL);
+  std::vector<char> indefinite(n, 0);
+  Eigen::MatrixXd PAPt(n, n);
+  for (int k = 0; k < n; ++k) {
+    indefinite[k] = at(reference.permutation(k)) < 0;
+    for (int l = 0; l < n; ++l) PAPt(k, l) = dense(reference.permutation(k), reference.permutation(l));
+  }
+  for (int threads : {1, 2}) {
+    const MultifrontalCholesky plan(reference.structure(), A, threads, 0.0, indefinite);
+    std::vector<double> values(reference.storage()), pivots(n);
+    ASSERT_EQ(plan.factorize(A, values.data(), pivots.data()), -1) << threads;
+    for (int k = 0; k < n; ++k) EXPECT_EQ(pivots[k] < 0, indefinite[k] == 1) << k;
+    const Eigen::MatrixXd product = signedProduct(reference.structure(), values, pivots);
+    EXPECT_LT((product - PAPt).cwiseAbs().maxCoeff(), 1e-12 * PAPt.cwiseAbs().maxCoeff()) << threads;
+  }
+}
+
 // A positive definite matrix through signed fronts only: CHOLMOD's factor, all signs +.
 TEST(MultifrontalCholesky, SignedFrontsOfAPositiveDefiniteMatrixGiveCholesky) {
   const SparseMatrix A = laplacian2d(30);
