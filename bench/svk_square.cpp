@@ -34,6 +34,7 @@ extern "C" void dgemm_(const char*, const char*, const int*, const int*, const i
 namespace {
 
 bool csv = false;
+bool extrapolate = false;
 
 // GFLOP/s of C = A B with n x n matrices, best of 5 (the machine is shared).
 double dgemmRate(int n) {
@@ -87,6 +88,7 @@ void run(int N, const std::string& method) {
   analysis::NewtonSettings settings;
   settings.resiGlobRela = 1e-8;
   settings.method = method;
+  if (extrapolate) settings.prediction = analysis::Prediction::Extrapolated;
   analysis::StaticNonlinear newton(system, nullptr, settings);
   analysis::ConvergenceTable table(false);
   if (getenv("NEWTON_PRINT")) newton.addObserver(table);
@@ -136,6 +138,8 @@ int main(int argc, char** argv) {
       method = argv[++i];
     else if (!std::strcmp(argv[i], "--dgemm") && i + 1 < argc)
       dgemmSize = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--prediction") && i + 1 < argc)
+      extrapolate = !std::strcmp(argv[++i], "EXTRAPOLE");
     else if (!std::strcmp(argv[i], "--csv"))
       csv = true;
     else
