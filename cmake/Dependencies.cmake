@@ -1,6 +1,6 @@
 # Every dependency comes from Debian 12's packages (see README.md and .ci/run).
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
-find_package(OpenMP)
+find_package(Threads REQUIRED)
 
 find_path(SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
 find_library(CHOLMOD_LIB cholmod REQUIRED)

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "core/worker_pool.hpp"
 #include "expr/expression.hpp"
 #include "fem/mesh_cell_type.hpp"
 #include "mechanics/isotropic_elasticity.hpp"
@@ -298,41 +299,28 @@ void MechanicalSystem::assembleCells(const Eigen::VectorXd& U, double t, Eigen::
       throw InvalidStateError(e.what());
     }
   } else {
-    // A kernel may throw (an inverted cell during a diverging Newton): an
-    // exception must not leave an OpenMP region, so the first one is kept and
-    // thrown after it, for the step to be cut as in the serial case.
-    std::exception_ptr failure;
-#pragma omp parallel
-    {
-      // K's values are zeroed by both threads, in the region the colours run in.
-      constexpr std::int64_t kSlice = 1 << 16;
-#pragma omp for schedule(static)
-      for (std::int64_t first = 0; first < nonZeros; first += kSlice)
-        std::fill(values + first, values + std::min(nonZeros, first + kSlice), 0.0);
-      double X[2 * kMaxNodes], u[2 * kMaxNodes], un[2 * kMaxNodes], fe[2 * kMaxNodes], Ke[4 * kMaxNodes * kMaxNodes];
-      std::vector<double> variables(kMaxGaussPoints * maxVariables_);
-      const int cellCount = static_cast<int>(cells_.size());
-      for (const std::vector<int>& colour : chunkColours_) {
-        const int count = static_cast<int>(colour.size());
-#pragma omp for schedule(static)
-        for (int k = 0; k < count; ++k) {
-          try {
-            const int first = colour[k] * kChunkCells;
-            for (int c = first; c < std::min(cellCount, first + kChunkCells); ++c)
-              element(cells_[c], X, u, un, variables.data(), fe, Ke);
-          } catch (...) {
-#pragma omp critical(aster_assembly_failure)
-            if (!failure) failure = std::current_exception();
-          }
-        }
-      }
-    }
-    if (failure) {
-      try {
-        std::rethrow_exception(failure);
-      } catch (const Error& e) {
-        throw InvalidStateError(e.what());
-      }
+    // Chunks of one colour share no unknown: the pool's threads claim them as they come
+    // free. A kernel may throw (an inverted cell during a diverging Newton): the first
+    // exception is thrown after the loop, for the step to be cut as in the serial case.
+    WorkerPool& pool = WorkerPool::shared();
+    constexpr std::int64_t kSlice = 1 << 16;
+    pool.forEach(static_cast<int>((nonZeros + kSlice - 1) / kSlice), [&](int k) {
+      const std::int64_t first = k * kSlice;
+      std::fill(values + first, values + std::min(nonZeros, first + kSlice), 0.0);
+    });
+    const int cellCount = static_cast<int>(cells_.size());
+    try {
+      for (const std::vector<int>& colour : chunkColours_)
+        pool.forEach(static_cast<int>(colour.size()), [&](int k) {
+          double X[2 * kMaxNodes], u[2 * kMaxNodes], un[2 * kMaxNodes], fe[2 * kMaxNodes],
+              Ke[4 * kMaxNodes * kMaxNodes];
+          std::vector<double> variables(kMaxGaussPoints * maxVariables_);
+          const int first = colour[k] * kChunkCells;
+          for (int c = first; c < std::min(cellCount, first + kChunkCells); ++c)
+            element(cells_[c], X, u, un, variables.data(), fe, Ke);
+        });
+    } catch (const Error& e) {
+      throw InvalidStateError(e.what());
     }
   }
 }

@@ -7,10 +7,8 @@
 #include <sstream>
 #include <vector>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
+#include "core/worker_pool.hpp"
 #include "linalg/blas_info.hpp"
 #include "linalg/cholmod_views.hpp"
 #include "linalg/factor_memory.hpp"
@@ -206,10 +204,7 @@ void CholmodSolver::planMultifrontal(const SparseMatrix& A, const std::vector<in
     throw Error(name() + ": cannot allocate the factor: " + cholmodStatus(c.status));
   adviseHugePages(L->x, L->xsize * sizeof(double));  // written whole at every factorization
   const SupernodalStructure structure = supernodalStructure(*L);
-  int threads = 1;
-#ifdef _OPENMP
-  threads = omp_get_max_threads();
-#endif
+  const int threads = WorkerPool::shared().threads();
   std::vector<char> indefinite;  // the constraint columns, in the order of L
   if (std::find(constraintSet.begin(), constraintSet.end(), 1) != constraintSet.end()) {
     indefinite.resize(L->n);

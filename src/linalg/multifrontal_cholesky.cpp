@@ -1,12 +1,15 @@
 #include "linalg/multifrontal_cholesky.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <climits>
+#include <functional>
 #include <cmath>
 #include <memory>
 #include <new>
 #include <numeric>
 
+#include "core/worker_pool.hpp"
 #include "linalg/blas_info.hpp"
 
 extern "C" {
@@ -50,15 +53,13 @@ void addIntoUpdate(const double* update, int u, const int* relative, int split, 
   }
 }
 
-// Dense kernels of the fronts at the top of the tree, on `parts` threads (one-thread BLAS
-// each): the work split in independent pieces rather than left to a multithreaded BLAS,
-// whose idle threads spin for a while after each call and slow down whatever runs next.
-template <class Piece>
-void inParallel(int parts, Piece&& piece) {
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static, 1) num_threads(blasCallersThatFit(parts))
-#endif
-  for (int p = 0; p < parts; ++p) piece(p);
+// Dense kernels of the large fronts in `parts` independent pieces (one-thread BLAS each),
+// which the pool's threads claim as they come free, rather than left to a multithreaded
+// BLAS, whose idle threads spin for a while after each call and slow down whatever runs
+// next. The pieces depend on `parts` alone, so a front's numbers do not depend on which
+// threads ran them.
+void inParallel(int parts, const std::function<void(int)>& piece) {
+  WorkerPool::shared().forEach(parts, piece, blasCallersThatFit(parts));
 }
 
 // First row of the p-th of `parts` equal slices of [0, rows).
@@ -290,63 +291,41 @@ MultifrontalCholesky::MultifrontalCholesky(const SupernodalStructure& structure,
   schedule(threads, parallelFlops);
 }
 
-// Shares subtrees out between threads: the heaviest subtree is split (its root goes to the
-// top of the tree, its children become subtrees) until a longest-first assignment balances
-// the threads within 5 %, as the roots split into ever smaller subtrees.
+// Plans the parallel run: the supernodes in a postorder (each subtree a contiguous run of
+// it), and the flops of each subtree, which decide where the tree stops being split.
 void MultifrontalCholesky::schedule(int threads, double parallelFlops) {
-  threadSupernodes_.clear();
-  topSupernodes_.clear();
   const int ns = structure_.supernodeCount;
-  if (threads < 2 || totalFlops_ < parallelFlops) {
-    topSupernodes_.resize(ns);
-    std::iota(topSupernodes_.begin(), topSupernodes_.end(), 0);
-    return;
-  }
-  std::vector<double> subtree(flops_);
+  threads_ = threads >= 2 && totalFlops_ >= parallelFlops ? threads : 1;
+  subtreeFlops_ = flops_;
   for (int s = 0; s < ns; ++s)
-    if (parent_[s] >= 0) subtree[parent_[s]] += subtree[s];
-  std::vector<int> candidates;
+    if (parent_[s] >= 0) subtreeFlops_[parent_[s]] += subtreeFlops_[s];
+  roots_.clear();
   for (int s = 0; s < ns; ++s)
-    if (parent_[s] < 0) candidates.push_back(s);
-  std::vector<char> top(ns, 0);
-  std::vector<std::vector<int>> bins;
-  for (int split = 0; split < 4096 && !candidates.empty(); ++split) {
-    std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return subtree[a] > subtree[b]; });
-    std::vector<double> load(threads, 0.0);
-    bins.assign(threads, {});
-    for (int c : candidates) {
-      const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-      load[t] += subtree[c];
-      bins[t].push_back(c);
+    if (parent_[s] < 0) roots_.push_back(s);
+  postorder_.clear();
+  postorder_.reserve(ns);
+  subtreeStart_.assign(ns, 0);
+  position_.assign(ns, 0);
+  std::vector<std::pair<int, int>> stack;  // (supernode, next child to visit)
+  for (int root : roots_) {
+    stack.push_back({root, childStart_[root]});
+    subtreeStart_[root] = static_cast<int>(postorder_.size());
+    while (!stack.empty()) {
+      auto& [s, e] = stack.back();
+      if (e < childStart_[s + 1]) {
+        const int c = children_[e++];
+        subtreeStart_[c] = static_cast<int>(postorder_.size());
+        stack.push_back({c, childStart_[c]});
+      } else {
+        position_[s] = static_cast<int>(postorder_.size());
+        postorder_.push_back(s);
+        stack.pop_back();
+      }
     }
-    const double most = *std::max_element(load.begin(), load.end());
-    const double least = *std::min_element(load.begin(), load.end());
-    if (most - least <= 0.05 * most) break;
-    const int heaviest = candidates.front();
-    candidates.erase(candidates.begin());
-    top[heaviest] = 1;
-    for (int e = childStart_[heaviest]; e < childStart_[heaviest + 1]; ++e) candidates.push_back(children_[e]);
-    bins.clear();
   }
-  if (bins.empty()) {  // never balanced: one thread
-    topSupernodes_.resize(ns);
-    std::iota(topSupernodes_.begin(), topSupernodes_.end(), 0);
-    return;
-  }
-  // Every supernode below a subtree's root goes to that root's thread (a parent is numbered
-  // after its children, so walking down the numbers meets the parent first).
-  std::vector<int> thread(ns, -1);
-  for (int t = 0; t < threads; ++t)
-    for (int root : bins[t]) thread[root] = t;
-  for (int s = ns - 1; s >= 0; --s)  // parents before children
-    if (!top[s] && thread[s] < 0 && parent_[s] >= 0) thread[s] = thread[parent_[s]];
-  threadSupernodes_.assign(threads, {});
-  for (int s = 0; s < ns; ++s) {
-    if (top[s])
-      topSupernodes_.push_back(s);
-    else
-      threadSupernodes_[thread[s]].push_back(s);
-  }
+  // Subtrees below this many flops run whole on one thread: enough pieces for the threads
+  // to share them out as they go, few enough that claiming them costs nothing.
+  splitFlops_ = std::max(1e6, totalFlops_ / (16.0 * threads_));
 }
 
 int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* values, double* pivots,
@@ -409,51 +388,67 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
   return -1;
 }
 
+// One factorization's shared state: the first failing column (INT_MAX: none yet).
+struct MultifrontalCholesky::Run {
+  const double* a;
+  double* values;
+  double* pivots;
+  Updates updates;
+  std::atomic<int> failure{INT_MAX};
+};
+
+// A front is skipped once a column before its own failed: its children's update matrices
+// may be missing, and the column reported stays the one a single thread meets first (the
+// smallest failing one, as a front's columns follow its descendants').
+void MultifrontalCholesky::factorizeFront(int s, Run& run) const {
+  if (run.failure.load(std::memory_order_relaxed) < structure_.firstColumn[s]) return;
+  const int parts = threads_ > 1 && flops_[s] >= kSliceFlops ? 2 * threads_ : 1;
+  const int column = factorizeSupernode(s, run.a, run.values, run.pivots, run.updates, parts);
+  if (column < 0) return;
+  int seen = run.failure.load();
+  while (column < seen && !run.failure.compare_exchange_weak(seen, column)) {
+  }
+}
+
+// The subtree of s: a chain of single children walked down to where the tree branches,
+// the branches as items of one loop (each a subtree, split the same way while it is large),
+// then the fronts of the chain upwards. Small subtrees run whole, in postorder.
+void MultifrontalCholesky::factorizeSubtree(int s, Run& run, int depth) const {
+  std::vector<int> chain{s};
+  auto onlyChild = [&](int t) { return childStart_[t + 1] - childStart_[t] == 1 ? children_[childStart_[t]] : -1; };
+  for (int c = onlyChild(s); c >= 0 && subtreeFlops_[c] >= splitFlops_; c = onlyChild(c)) chain.push_back(c);
+  const int bottom = chain.back();
+  if (subtreeFlops_[bottom] < splitFlops_ || depth > kMaxDepth) {
+    for (int k = subtreeStart_[bottom]; k <= position_[bottom]; ++k) factorizeFront(postorder_[k], run);
+  } else {
+    const int first = childStart_[bottom], count = childStart_[bottom + 1] - first;
+    WorkerPool::shared().forEach(
+        count, [&](int e) { factorizeSubtree(children_[first + e], run, depth + 1); }, blasCallersThatFit(threads_));
+    factorizeFront(bottom, run);
+  }
+  for (int k = static_cast<int>(chain.size()) - 2; k >= 0; --k) factorizeFront(chain[k], run);
+}
+
 int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, double* pivots) const {
-  Updates updates(structure_.supernodeCount);
-  const double* a = A.valuePtr();
-  const int threads = static_cast<int>(threadSupernodes_.size());
-  if (threads == 0) {
-    for (int s : topSupernodes_) {
-      const int column = factorizeSupernode(s, a, values, pivots, updates, 1);
+  Run run{A.valuePtr(), values, pivots, Updates(structure_.supernodeCount)};
+  if (threads_ < 2) {
+    for (int s = 0; s < structure_.supernodeCount; ++s) {
+      const int column = factorizeSupernode(s, run.a, values, pivots, run.updates, 1);
       if (column >= 0) return column;
     }
     return -1;
   }
-  // Every BLAS call on its calling thread: subtrees on their threads, then the large fronts
-  // of the top of the tree in slices.
+  // Every BLAS call on its calling thread, the threads being the pool's.
   ScopedBlasThreads oneEach(1);
-  // Each thread stops at its own first failure, so the column reported is the one a
-  // single thread would meet first, whatever the number of threads.
-  // An exception must not leave an OpenMP region: an update matrix that cannot be
-  // allocated is reported after it.
-  std::vector<int> failure(threads, INT_MAX);
-  std::vector<char> outOfMemory(threads, 0);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static, 1) num_threads(blasCallersThatFit(threads))
-#endif
-  for (int t = 0; t < threads; ++t) {
-    try {
-      for (int s : threadSupernodes_[t]) {
-        const int column = factorizeSupernode(s, a, values, pivots, updates, 1);
-        if (column >= 0) {
-          failure[t] = column;
-          break;
-        }
-      }
-    } catch (const std::bad_alloc&) {
-      outOfMemory[t] = 1;
-    }
-  }
-  if (std::find(outOfMemory.begin(), outOfMemory.end(), 1) != outOfMemory.end())
+  try {
+    WorkerPool::shared().forEach(
+        static_cast<int>(roots_.size()), [&](int r) { factorizeSubtree(roots_[r], run, 0); },
+        blasCallersThatFit(threads_));
+  } catch (const std::bad_alloc&) {
     throw Error("multifrontal Cholesky: out of memory for the update matrices of the factorization");
-  const int failed = *std::min_element(failure.begin(), failure.end());
-  if (failed != INT_MAX) return failed;
-  for (int s : topSupernodes_) {
-    const int column = factorizeSupernode(s, a, values, pivots, updates, threads);
-    if (column >= 0) return column;
   }
-  return -1;
+  const int failed = run.failure.load();
+  return failed == INT_MAX ? -1 : failed;
 }
 
 }  // namespace aster::linalg

@@ -9,10 +9,13 @@
 // with that descendant's few columns as inner dimension, and ran at 11 % of dgemm's rate on
 // 2D meshes (docs/performance.md).
 //
-// Subtrees of the elimination tree are independent: they are shared out between threads,
-// each with a one-thread BLAS, and the top of the tree, whose fronts are large, runs after
-// them, each front's dense work split between the threads. Each front is computed the same way on any thread, in the
-// same order of its children, and a failure names the same column as on one thread.
+// Subtrees of the elimination tree are independent: a front's children are the items of a
+// loop of the program's worker pool (core/worker_pool.hpp), each run with a one-thread BLAS
+// and split the same way while it is large, so the threads take subtrees as they come free
+// rather than a share fixed in advance, which a busy machine would leave unbalanced. The
+// dense work of a large front is split into pieces the free threads help with. Each front
+// is computed the same way on any thread, in the same order of its children, and a failure
+// names the same column as on one thread.
 //
 // The symbolic structure (ordering, supernodes, row patterns, storage of L) is CHOLMOD's
 // supernodal analysis, so that cholmod_solve uses the factor as if CHOLMOD had computed it.
@@ -47,9 +50,12 @@ class MultifrontalCholesky {
  public:
   // Below this many estimated flops a factorization runs on one thread.
   static constexpr double kParallelFlops = 2e7;
+  // Fronts of this many flops or more have their dense work split into pieces.
+  static constexpr double kSliceFlops = 4e6;
 
   // Plans the factorization of matrices with A's pattern, both triangles stored (the same
-  // pattern the structure was computed from). threads: how many subtrees may run at once.
+  // pattern the structure was computed from). threads: how many threads the work is planned for
+  // (the pieces of a front depend on it; the pool's threads run them).
   // indefinite[k] (size n, or empty): column k of P A P^T may take a negative pivot.
   MultifrontalCholesky(const SupernodalStructure& structure, const SparseMatrix& A, int threads,
                        double parallelFlops = kParallelFlops, const std::vector<char>& indefinite = {});
@@ -60,12 +66,16 @@ class MultifrontalCholesky {
   // indefinite front; L is then partial).
   int factorize(const SparseMatrix& A, double* values, double* pivots = nullptr) const;
 
-  // Subtrees the factorization runs concurrently (0: every supernode on the calling thread).
-  int concurrentSubtrees() const { return static_cast<int>(threadSupernodes_.size()); }
+  // Whether the factorization runs on the worker pool (false: every front on the calling thread).
+  bool parallel() const { return threads_ > 1; }
   double estimatedFlops() const { return totalFlops_; }
 
  private:
   using Updates = std::vector<std::unique_ptr<double[]>>;  // per supernode, until its parent adds it
+  struct Run;
+  static constexpr int kMaxDepth = 64;  // subtrees deeper than this run whole (a bound on the stack)
+  void factorizeSubtree(int s, Run& run, int depth) const;
+  void factorizeFront(int s, Run& run) const;
   // parts > 1: the front's dense work split between that many threads (top of the tree).
   int factorizeSupernode(int s, const double* a, double* values, double* pivots, Updates& updates,
                          int parts) const;
@@ -83,8 +93,13 @@ class MultifrontalCholesky {
   std::vector<double> flops_;          // estimate per supernode
   std::vector<char> signedFront_;      // per supernode: holds an indefinite column
   double totalFlops_ = 0;
-  std::vector<std::vector<int>> threadSupernodes_;  // per thread, in elimination order
-  std::vector<int> topSupernodes_;                 // after them, each front split between the threads
+  int threads_ = 1;
+  std::vector<double> subtreeFlops_;   // per supernode, its whole subtree's
+  double splitFlops_ = 0;              // subtrees below this run whole on one thread
+  std::vector<int> roots_;
+  std::vector<int> postorder_;         // the supernodes, each subtree a contiguous run
+  std::vector<int> subtreeStart_;      // where s's subtree starts in postorder_
+  std::vector<int> position_;          // where s is in postorder_
 };
 
 }  // namespace aster::linalg

@@ -1,10 +1,12 @@
 #include "linalg/sparsity_pattern.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/worker_pool.hpp"
 
 namespace aster::linalg {
 
@@ -127,9 +129,13 @@ void SymmetryCheck::require(const SparseMatrix& A, double relTol, const std::str
   };
   // Both cores look for a failure; the first one, in a fixed order, is then named.
   const long long pairs = static_cast<long long>(mirrors_.size());
-  bool failed = false;
-#pragma omp parallel for reduction(|| : failed) schedule(static) if (pairs > 100000)
-  for (long long e = 0; e < pairs; ++e) failed = failed || pairFails(static_cast<std::size_t>(e));
+  std::atomic<bool> failed{false};
+  constexpr long long kSlice = 1 << 16;
+  const int slices = static_cast<int>((pairs + kSlice - 1) / kSlice);
+  WorkerPool::shared().forEach(slices, [&](int k) {
+    for (long long e = k * kSlice; e < std::min(pairs, (k + 1) * kSlice) && !failed.load(std::memory_order_relaxed); ++e)
+      if (pairFails(static_cast<std::size_t>(e))) failed = true;
+  });
   if (failed)
     for (std::size_t e = 0; e < mirrors_.size(); ++e)
       if (pairFails(e)) throwUnsymmetric(A, r[mirrors_[e].first], r[mirrors_[e].second], method);

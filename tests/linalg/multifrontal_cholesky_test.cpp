@@ -104,27 +104,21 @@ struct Case {
   const char* name;
   int ordering;
   int threads;
-  int subtrees;  // on one Laplacian; the natural order of a band is a chain, with no independent subtrees
 };
 
 class AgainstCholmod : public ::testing::TestWithParam<Case> {};
 
 // The factor is CHOLMOD's own (same structure, same arithmetic up to rounding), on one
-// thread and with subtrees on 2 or 3 threads.
+// thread and planned for 2 or 3 threads (run on the worker pool's).
 TEST_P(AgainstCholmod, ComputesCholmodsFactor) {
   const bool parallel = GetParam().threads > 1;
-  const struct {
-    SparseMatrix A;
-    int subtrees;
-  } problems[] = {{laplacian2d(50), GetParam().subtrees},
-                  {twoLaplacians(30), parallel ? GetParam().threads : 0},
-                  {laplacian3d(18), GetParam().subtrees}};
-  for (const auto& [A, subtrees] : problems) {
+  const SparseMatrix problems[] = {laplacian2d(50), twoLaplacians(30), laplacian3d(18)};
+  for (const SparseMatrix& A : problems) {
     if (GetParam().ordering == CHOLMOD_NATURAL && A.rows() > 5000) continue;  // a band of m^2: dense and slow
     CholmodReference reference(A, GetParam().ordering);
     ASSERT_EQ(reference.referenceMinor(), static_cast<size_t>(A.rows()));
     const MultifrontalCholesky plan(reference.structure(), A, GetParam().threads, 0.0);
-    EXPECT_EQ(plan.concurrentSubtrees(), subtrees) << A.rows();
+    EXPECT_EQ(plan.parallel(), parallel) << A.rows();
     std::vector<double> values(reference.storage(), -7.0);  // garbage the factorization must overwrite
     std::vector<double> pivots(A.rows());
     EXPECT_EQ(plan.factorize(A, values.data(), pivots.data()), -1);
@@ -141,10 +135,10 @@ TEST_P(AgainstCholmod, ComputesCholmodsFactor) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Orderings, AgainstCholmod,
-                         ::testing::Values(Case{"AMD", CHOLMOD_AMD, 1, 0}, Case{"NESDIS", CHOLMOD_NESDIS, 1, 0},
-                                           Case{"NESDIS2", CHOLMOD_NESDIS, 2, 2}, Case{"AMD2", CHOLMOD_AMD, 2, 2},
-                                           Case{"NESDIS3", CHOLMOD_NESDIS, 3, 3},
-                                           Case{"NATURAL", CHOLMOD_NATURAL, 2, 0}),
+                         ::testing::Values(Case{"AMD", CHOLMOD_AMD, 1}, Case{"NESDIS", CHOLMOD_NESDIS, 1},
+                                           Case{"NESDIS2", CHOLMOD_NESDIS, 2}, Case{"AMD2", CHOLMOD_AMD, 2},
+                                           Case{"NESDIS3", CHOLMOD_NESDIS, 3},
+                                           Case{"NATURAL", CHOLMOD_NATURAL, 2}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // New values on the same pattern: the plan is reused, the factor follows the values.
@@ -302,7 +296,7 @@ TEST(MultifrontalCholesky, SmallProblemsRunOnOneThread) {
   CholmodReference reference(A, CHOLMOD_AMD);
   const MultifrontalCholesky plan(reference.structure(), A, 2);
   EXPECT_LT(plan.estimatedFlops(), MultifrontalCholesky::kParallelFlops);
-  EXPECT_EQ(plan.concurrentSubtrees(), 0);
+  EXPECT_FALSE(plan.parallel());
 }
 
 TEST(MultifrontalCholesky, RefusesAMatrixOfAnotherSize) {

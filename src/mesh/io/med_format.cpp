@@ -494,7 +494,7 @@ namespace {
 // print their error stacks to stderr. A MED file is therefore
 // read in a child process (fork) that sends what it read back through a pipe;
 // the parent turns a child that dies into an error naming the file. The child
-// only reads the file and leaves with _exit: no OpenMP region, no destructor of
+// only reads the file and leaves with _exit: no loop of the worker pool, no destructor of
 // the parent's objects and no atexit handler runs in it. Its stdout goes to
 // /dev/null, its stderr to a temporary file that is dropped, unless it holds a
 // sanitizer report (sanitizer builds), which is passed on.
