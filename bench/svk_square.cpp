@@ -7,7 +7,8 @@
 // Also: the ordering and flops of the factorization, its rate (flops of one factorization
 // over the mean time of one; and over the mean time of those after the first, which also
 // gets the factor's memory from the system), and the rate of a dense dgemm with the BLAS linked.
-//   bench_svk_square [N ...] [--solver MULT_FRONT|MUMPS|UMFPACK|CHOLMOD|KLU|EIGEN_LU] [--dgemm n] [--csv]
+//   bench_svk_square [N ...] [--solver MULT_FRONT|MUMPS|UMFPACK|CHOLMOD|KLU|EIGEN_LU]
+//                    [--prediction TANGENTE|EXTRAPOLE] [--dgemm n] [--csv]
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -142,8 +143,13 @@ int main(int argc, char** argv) {
       extrapolate = !std::strcmp(argv[++i], "EXTRAPOLE");
     else if (!std::strcmp(argv[i], "--csv"))
       csv = true;
-    else
+    else if (std::atoi(argv[i]) >= 1)
       sizes.push_back(std::atoi(argv[i]));
+    else {
+      std::fprintf(stderr, "usage: bench_svk_square [N ...] [--solver METHODE] [--prediction TANGENTE|EXTRAPOLE] "
+                           "[--dgemm n] [--csv]\n");
+      return !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h") ? 0 : 2;
+    }
   }
   const linalg::BlasInfo blas = linalg::blasInUse();
   std::printf("%s BLAS: %s (%s, core %s, %d threads)\n", csv ? "#" : "", blas.library.c_str(),
