@@ -302,6 +302,18 @@ void CholmodSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     // One BLAS thread: the triangular solves are bound by memory, and a second BLAS thread,
     // once woken, spins for a while after the call, taking a core from what runs next.
     ScopedBlasThreads one(1);
+    if (multifrontal_) {
+      // The factor is the multifrontal factorization's: solved front by front, on the pool.
+      const cholmod_factor* L = h_->factor;
+      const int* perm = static_cast<const int*>(L->Perm);
+      const int n = static_cast<int>(L->n);
+      std::vector<double> y(n);
+      for (int k = 0; k < n; ++k) y[k] = b[perm ? perm[k] : k];
+      multifrontal_->solve(static_cast<const double*>(L->x), negativePivots_ ? pivots_.data() : nullptr, y.data());
+      x.resize(n);
+      for (int k = 0; k < n; ++k) x[perm ? perm[k] : k] = y[k];
+      return;
+    }
     if (!negativePivots_) {
       solution = cholmod_solve(CHOLMOD_A, h_->factor, &rhs, &h_->common);
     } else {

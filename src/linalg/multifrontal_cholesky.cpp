@@ -21,6 +21,10 @@ void dgemm_(const char* transa, const char* transb, const int* m, const int* n, 
             const int* ldc);
 void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
             const int* lda, const double* beta, double* c, const int* ldc);
+void dtrsv_(const char* uplo, const char* trans, const char* diag, const int* n, const double* a, const int* lda,
+            double* x, const int* incx);
+void dgemv_(const char* trans, const int* m, const int* n, const double* alpha, const double* a, const int* lda,
+            const double* x, const int* incx, const double* beta, double* y, const int* incy);
 }
 
 namespace aster::linalg {
@@ -410,23 +414,61 @@ void MultifrontalCholesky::factorizeFront(int s, Run& run) const {
   }
 }
 
-// The subtree of s: a chain of single children walked down to where the tree branches,
-// the branches as items of one loop (each a subtree, split the same way while it is large),
-// then the fronts of the chain upwards. Small subtrees run whole, in postorder.
-void MultifrontalCholesky::factorizeSubtree(int s, Run& run, int depth) const {
+// The subtree of s, children before parents: a chain of single children walked down to
+// where the tree branches, the branches as items of one loop (each a subtree, split the same
+// way while it is large), then the fronts of the chain upwards. Small subtrees run whole, in
+// postorder.
+void MultifrontalCholesky::walkUp(int s, const std::function<void(int)>& front, int depth) const {
   std::vector<int> chain{s};
-  auto onlyChild = [&](int t) { return childStart_[t + 1] - childStart_[t] == 1 ? children_[childStart_[t]] : -1; };
-  for (int c = onlyChild(s); c >= 0 && subtreeFlops_[c] >= splitFlops_; c = onlyChild(c)) chain.push_back(c);
+  for (int c = onlyLargeChild(s); c >= 0; c = onlyLargeChild(c)) chain.push_back(c);
   const int bottom = chain.back();
   if (subtreeFlops_[bottom] < splitFlops_ || depth > kMaxDepth) {
-    for (int k = subtreeStart_[bottom]; k <= position_[bottom]; ++k) factorizeFront(postorder_[k], run);
+    for (int k = subtreeStart_[bottom]; k <= position_[bottom]; ++k) front(postorder_[k]);
   } else {
     const int first = childStart_[bottom], count = childStart_[bottom + 1] - first;
     WorkerPool::shared().forEach(
-        count, [&](int e) { factorizeSubtree(children_[first + e], run, depth + 1); }, blasCallersThatFit(threads_));
-    factorizeFront(bottom, run);
+        count, [&](int e) { walkUp(children_[first + e], front, depth + 1); }, blasCallersThatFit(threads_));
+    front(bottom);
   }
-  for (int k = static_cast<int>(chain.size()) - 2; k >= 0; --k) factorizeFront(chain[k], run);
+  for (int k = static_cast<int>(chain.size()) - 2; k >= 0; --k) front(chain[k]);
+}
+
+// The subtree of s, parents before children: the mirror of walkUp.
+void MultifrontalCholesky::walkDown(int s, const std::function<void(int)>& front, int depth) const {
+  int bottom = s;
+  front(s);
+  for (int c = onlyLargeChild(s); c >= 0; c = onlyLargeChild(c)) front(bottom = c);
+  if (subtreeFlops_[bottom] < splitFlops_ || depth > kMaxDepth) {
+    for (int k = position_[bottom] - 1; k >= subtreeStart_[bottom]; --k) front(postorder_[k]);
+  } else {
+    const int first = childStart_[bottom], count = childStart_[bottom + 1] - first;
+    WorkerPool::shared().forEach(
+        count, [&](int e) { walkDown(children_[first + e], front, depth + 1); }, blasCallersThatFit(threads_));
+  }
+}
+
+int MultifrontalCholesky::onlyLargeChild(int s) const {
+  if (childStart_[s + 1] - childStart_[s] != 1) return -1;
+  const int c = children_[childStart_[s]];
+  return subtreeFlops_[c] >= splitFlops_ ? c : -1;
+}
+
+// Every front of the tree once, children before parents (upward) or parents first: on the
+// calling thread in the order of the supernodes, or on the pool's threads.
+void MultifrontalCholesky::forEachFront(bool upward, const std::function<void(int)>& front) const {
+  const int ns = structure_.supernodeCount;
+  if (threads_ < 2) {
+    if (upward)
+      for (int s = 0; s < ns; ++s) front(s);
+    else
+      for (int s = ns - 1; s >= 0; --s) front(s);
+    return;
+  }
+  ScopedBlasThreads oneEach(1);  // every BLAS call on its calling thread, the threads being the pool's
+  WorkerPool::shared().forEach(
+      static_cast<int>(roots_.size()),
+      [&](int r) { upward ? walkUp(roots_[r], front, 0) : walkDown(roots_[r], front, 0); },
+      blasCallersThatFit(threads_));
 }
 
 int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, double* pivots) const {
@@ -438,17 +480,65 @@ int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, doubl
     }
     return -1;
   }
-  // Every BLAS call on its calling thread, the threads being the pool's.
-  ScopedBlasThreads oneEach(1);
   try {
-    WorkerPool::shared().forEach(
-        static_cast<int>(roots_.size()), [&](int r) { factorizeSubtree(roots_[r], run, 0); },
-        blasCallersThatFit(threads_));
+    forEachFront(true, [&](int s) { factorizeFront(s, run); });
   } catch (const std::bad_alloc&) {
     throw Error("multifrontal Cholesky: out of memory for the update matrices of the factorization");
   }
   const int failed = run.failure.load();
   return failed == INT_MAX ? -1 : failed;
+}
+
+// L z = y front by front, children first: a front's columns of z from its own entries of y
+// less its children's update vectors (L21 z of the columns below them, carried up to the
+// front that owns each row, as the factorization carries its update matrices); then
+// z := S z; then L^T w = z, parents first, each front reading the rows below it from its
+// ancestors' results.
+void MultifrontalCholesky::solve(const double* values, const double* pivots, double* y) const {
+  const SupernodalStructure& S = structure_;
+  Updates updates(S.supernodeCount);
+  const int one = 1;
+  const double plusOne = 1.0, minusOne = -1.0;
+  forEachFront(true, [&](int s) {
+    const int k1 = S.firstColumn[s], width = S.firstColumn[s + 1] - k1;
+    const int m = S.rowStart[s + 1] - S.rowStart[s], u = m - width;
+    const double* block = values + S.valueStart[s];
+    double* own = y + k1;
+    double* below = u > 0 ? new double[u]() : nullptr;
+    updates[s].reset(below);
+    for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
+      const int c = children_[e];
+      const int cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);
+      const int* relative = relative_.data() + relativeStart_[c];
+      const double* update = updates[c].get();
+      for (int i = 0; i < cu; ++i) {
+        const int r = relative[i];
+        if (r < width)
+          own[r] -= update[i];
+        else
+          below[r - width] += update[i];
+      }
+      updates[c].reset();
+    }
+    dtrsv_("L", "N", "N", &width, block, &m, own, &one);
+    if (u > 0) dgemv_("N", &u, &width, &plusOne, block + width, &m, own, &one, &plusOne, below, &one);
+  });
+  forEachFront(false, [&](int s) {
+    const int k1 = S.firstColumn[s], width = S.firstColumn[s + 1] - k1;
+    const int m = S.rowStart[s + 1] - S.rowStart[s], u = m - width;
+    const double* block = values + S.valueStart[s];
+    double* own = y + k1;
+    if (pivots)
+      for (int k = 0; k < width; ++k)
+        if (pivots[k1 + k] < 0) own[k] = -own[k];
+    if (u > 0) {
+      std::vector<double> rowsBelow(u);
+      const int* rows = S.rows + S.rowStart[s] + width;
+      for (int i = 0; i < u; ++i) rowsBelow[i] = y[rows[i]];
+      dgemv_("T", &u, &width, &minusOne, block + width, &m, rowsBelow.data(), &one, &plusOne, own, &one);
+    }
+    dtrsv_("L", "T", "N", &width, block, &m, own, &one);
+  });
 }
 
 }  // namespace aster::linalg

@@ -28,6 +28,7 @@
 // pivots first and then those of -(C + B K^-1 B^T), negative. Solve with
 // L y = P b, z = S y, L^T P x = z.
 #pragma once
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -66,6 +67,10 @@ class MultifrontalCholesky {
   // indefinite front; L is then partial).
   int factorize(const SparseMatrix& A, double* values, double* pivots = nullptr) const;
 
+  // Solves P A P^T w = y in place (y: P b on entry, P x on exit) with the factor the last
+  // factorize() left in values, and S from the signs of its pivots (null: S = I).
+  void solve(const double* values, const double* pivots, double* y) const;
+
   // Whether the factorization runs on the worker pool (false: every front on the calling thread).
   bool parallel() const { return threads_ > 1; }
   double estimatedFlops() const { return totalFlops_; }
@@ -74,8 +79,11 @@ class MultifrontalCholesky {
   using Updates = std::vector<std::unique_ptr<double[]>>;  // per supernode, until its parent adds it
   struct Run;
   static constexpr int kMaxDepth = 64;  // subtrees deeper than this run whole (a bound on the stack)
-  void factorizeSubtree(int s, Run& run, int depth) const;
   void factorizeFront(int s, Run& run) const;
+  void forEachFront(bool upward, const std::function<void(int)>& front) const;
+  void walkUp(int s, const std::function<void(int)>& front, int depth) const;
+  void walkDown(int s, const std::function<void(int)>& front, int depth) const;
+  int onlyLargeChild(int s) const;  // the one child of s when its subtree is split further, else -1
   // parts > 1: the front's dense work split between that many threads (top of the tree).
   int factorizeSupernode(int s, const double* a, double* values, double* pivots, Updates& updates,
                          int parts) const;

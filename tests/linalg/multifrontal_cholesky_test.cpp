@@ -269,6 +269,63 @@ TEST(MultifrontalCholesky, SignedPanelsFactorAWideSaddlePointFront) {
   }
 }
 
+// The solves with the factor: P A P^T w = P b solved in place, checked by the residual
+// of A x = b (relative to |A| |x|, round-off times a few hundred), for a forest of two
+// trees and a 3D Laplacian planned for one to three threads, and for a saddle point
+// (signed pivots, S between the two triangular solves).
+double relativeResidual(const SparseMatrix& A, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
+  const Eigen::VectorXd r = A * x - b;
+  const SparseMatrix absA = A.cwiseAbs();
+  const Eigen::VectorXd scale = absA * x.cwiseAbs() + b.cwiseAbs();
+  return (r.cwiseAbs().array() / scale.array()).maxCoeff();
+}
+
+Eigen::VectorXd solveWith(const MultifrontalCholesky& plan, const CholmodReference& reference,
+                          const std::vector<double>& values, const double* pivots, const Eigen::VectorXd& b) {
+  const int n = static_cast<int>(b.size());
+  std::vector<double> y(n);
+  for (int k = 0; k < n; ++k) y[k] = b(reference.permutation(k));
+  plan.solve(values.data(), pivots, y.data());
+  Eigen::VectorXd x(n);
+  for (int k = 0; k < n; ++k) x(reference.permutation(k)) = y[k];
+  return x;
+}
+
+TEST(MultifrontalCholesky, SolvesWithTheFactorOnAnyNumberOfThreads) {
+  for (const SparseMatrix& A : {twoLaplacians(40), laplacian3d(16)}) {
+    CholmodReference reference(A, CHOLMOD_NESDIS);
+    Eigen::VectorXd b(A.rows());
+    for (int i = 0; i < b.size(); ++i) b(i) = std::sin(0.3 * i) + 0.5;
+    Eigen::VectorXd first;
+    for (int threads : {1, 2, 3}) {
+      const MultifrontalCholesky plan(reference.structure(), A, threads, 0.0);
+      std::vector<double> values(reference.storage());
+      ASSERT_EQ(plan.factorize(A, values.data()), -1);
+      const Eigen::VectorXd x = solveWith(plan, reference, values, nullptr, b);
+      EXPECT_LT(relativeResidual(A, x, b), 1e-13) << threads;
+      if (threads == 1) first = x;
+      EXPECT_LT((x - first).cwiseAbs().maxCoeff(), 1e-12 * first.cwiseAbs().maxCoeff()) << threads;
+    }
+  }
+}
+
+TEST(MultifrontalCholesky, SolvesASaddlePointWithSignedPivots) {
+  const int m = 12, constraints = 6, n = m * m + constraints;
+  const SparseMatrix A = saddlePoint(m, constraints);
+  CholmodReference reference(A, CHOLMOD_NATURAL);
+  std::vector<char> indefinite(n, 0);
+  for (int k = 0; k < n; ++k) indefinite[k] = reference.permutation(k) >= m * m;
+  Eigen::VectorXd b(n);
+  for (int i = 0; i < n; ++i) b(i) = std::cos(0.7 * i);
+  for (int threads : {1, 2}) {
+    const MultifrontalCholesky plan(reference.structure(), A, threads, 0.0, indefinite);
+    std::vector<double> values(reference.storage()), pivots(n);
+    ASSERT_EQ(plan.factorize(A, values.data(), pivots.data()), -1);
+    const Eigen::VectorXd x = solveWith(plan, reference, values, pivots.data(), b);
+    EXPECT_LT(relativeResidual(A, x, b), 1e-12) << threads;
+  }
+}
+
 // A positive definite matrix through signed fronts only: CHOLMOD's factor, all signs +.
 TEST(MultifrontalCholesky, SignedFrontsOfAPositiveDefiniteMatrixGiveCholesky) {
   const SparseMatrix A = laplacian2d(30);
