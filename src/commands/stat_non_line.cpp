@@ -170,6 +170,7 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   settings.renum = choice.renum;
   settings.nprec = choice.nprec;
   settings.mumps = choice.mumps;
+  settings.gcpc = choice.gcpc;
   if (k.has("RECH_LINEAIRE")) {
     const auto& rl = k.factor("RECH_LINEAIRE").front();
     auto& ls = settings.lineSearchSettings;
@@ -393,7 +394,11 @@ void reportStatistics(const analysis::StaticNonlinear& newtonSolver, const analy
                   "(%.3f s), %lld nonzeros in the last factors, %s",
                   settings.method.c_str(), settings.renum.c_str(), ls.ordering.empty() ? "not reported" : ls.ordering.c_str(),
                   ls.factorizeCount, ls.factorizeSeconds, ls.factorNonzeros, flops);
-    Messages::info(buf);
+    line = buf;
+    if (settings.method == "GCPC")  // factorizeCount: the preconditioner's
+      line += "; " + std::to_string(ls.krylovIterations) + " conjugate gradient iterations over " +
+              std::to_string(ls.solveCount) + " solves";
+    Messages::info(line);
   }
 }
 
