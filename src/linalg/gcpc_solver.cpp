@@ -41,7 +41,8 @@ void GcpcSolver::requireSymmetric(const SparseMatrix& M) const {
   try {
     symmetry_->require(M, kSymmetryTolerance, name());
   } catch (const UnsymmetricMatrixError& e) {
-    throw Error(std::string(e.what()) +
+    const std::string what = e.what();  // the pair of entries, before the check's own advice
+    throw Error(what.substr(0, what.find(';')) +
                 "; GCPC (conjugate gradient) solves symmetric positive definite systems only: use a direct "
                 "solver (METHODE='MULT_FRONT' or 'MUMPS'), or NEWTON/MATR_RIGI_SYME='OUI'");
   }
