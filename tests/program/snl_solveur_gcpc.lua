@@ -1,5 +1,5 @@
 -- expect-exit: 0
--- expect-output: linear solver GCPC.*conjugate gradient.*GCPC: every check passed
+-- expect-output: 23 Newton iterations, 23 factorizations.*linear solver MULT_FRONT.*23 Newton iterations, [1-5] factorizations.*linear solver GCPC.*conjugate gradient iterations over 23 solves.*GCPC: every check passed
 -- SOLVEUR={METHODE='GCPC', PRE_COND='LDLT_SP' or 'LDLT_DP'}: the conjugate gradient
 -- preconditioned by a factorization of an earlier tangent. The thick cylinder of
 -- studies/thick_cylinder_hill.lua (elastic-perfectly plastic von Mises, plane strain, part 1:
