@@ -7,7 +7,9 @@
 // Also: the ordering and flops of the factorization, its rate (flops of one factorization
 // over the mean time of one; and over the mean time of those after the first, which also
 // gets the factor's memory from the system), and the rate of a dense dgemm with the BLAS linked.
-//   bench_svk_square [N ...] [--solver MULT_FRONT|MUMPS|UMFPACK|CHOLMOD|KLU|EIGEN_LU]
+// With --csv or --solver GCPC, a '#' line adds the counts (GCPC: the preconditioner's
+// factorizations, the conjugate gradient's iterations per Newton solve) and Ry to 12 digits.
+//   bench_svk_square [N ...] [--solver MULT_FRONT|MUMPS|GCPC|UMFPACK|CHOLMOD|KLU|EIGEN_LU]
 //                    [--prediction TANGENTE|EXTRAPOLE] [--dgemm n] [--csv]
 #include <sys/resource.h>
 
@@ -122,6 +124,16 @@ void run(int N, const std::string& method) {
     std::printf("| %4d | %9d | %3d | %8.2f | %8.2f | %8.2f | %8.2f | %9.3g | %6.1f | %6.1f | %8.0f | %+.7f | %+.7f | %s %s |\n",
                 N, system.dofCount(), s.iterations, total, s.assemblySeconds, s.solveSeconds, ls.factorizeSeconds,
                 ls.factorFlops, gflops, laterGflops, peakMegabytes(), rx, ry, method.c_str(), ls.ordering.c_str());
+  // A comment line (bench/run skips it): the counts, and Ry to 12 digits to compare solvers.
+  if (csv || method == "GCPC") {
+    std::printf("# N = %d %s: %d Newton iterations, %d matrices factorized by the driver, %d factorizations",
+                N, method.c_str(), s.iterations, s.factorizations, ls.factorizeCount);
+    if (method == "GCPC")
+      std::printf(" (of the preconditioner), %lld conjugate gradient iterations over %d solves (%.2f per solve)",
+                  ls.krylovIterations, ls.solveCount,
+                  ls.solveCount ? static_cast<double>(ls.krylovIterations) / ls.solveCount : 0.0);
+    std::printf(", Ry = %.12g\n", ry);
+  }
   std::fflush(stdout);
 }
 

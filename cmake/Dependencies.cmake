@@ -19,15 +19,17 @@ target_link_libraries(suitesparse INTERFACE "-Wl,--push-state,--no-as-needed" ${
   ${CHOLMOD_LIB} ${UMFPACK_LIB} ${KLU_LIB} ${AMD_LIB} ${COLAMD_LIB} ${SSCONFIG_LIB})
 
 # MUMPS, sequential (libmumps-seq-dev): dmumps_c.h includes the mpi.h of its MPI stand-in.
+# Double precision (DMUMPS) for METHODE='MUMPS', single (SMUMPS) for GCPC's PRE_COND='LDLT_SP'.
 find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
 find_path(MUMPS_SEQ_MPI_INCLUDE_DIR mpi.h PATHS /usr/include/mumps_seq NO_DEFAULT_PATH REQUIRED)
 find_library(DMUMPS_SEQ_LIB dmumps_seq REQUIRED)
+find_library(SMUMPS_SEQ_LIB smumps_seq REQUIRED)
 find_library(MUMPS_COMMON_SEQ_LIB mumps_common_seq REQUIRED)
 find_library(MPISEQ_SEQ_LIB mpiseq_seq REQUIRED)
 find_library(PORD_SEQ_LIB pord_seq REQUIRED)
 add_library(mumps_seq INTERFACE)
 target_include_directories(mumps_seq INTERFACE ${MUMPS_INCLUDE_DIR} ${MUMPS_SEQ_MPI_INCLUDE_DIR})
-target_link_libraries(mumps_seq INTERFACE ${DMUMPS_SEQ_LIB} ${MUMPS_COMMON_SEQ_LIB} ${MPISEQ_SEQ_LIB} ${PORD_SEQ_LIB})
+target_link_libraries(mumps_seq INTERFACE ${DMUMPS_SEQ_LIB} ${SMUMPS_SEQ_LIB} ${MUMPS_COMMON_SEQ_LIB} ${MPISEQ_SEQ_LIB} ${PORD_SEQ_LIB})
 
 find_path(LUA_INCLUDE_DIR lua.hpp PATH_SUFFIXES lua5.4 REQUIRED)
 find_library(LUA_LIB lua5.4 REQUIRED)

@@ -21,6 +21,7 @@ StaticLinear::StaticLinear(const MechanicalSystem& system, LinearSettings settin
   solver_->setFactorizationsPerAnalysis(1);  // one per stiffness, whatever the instants
   solver_->setSingularityDigits(settings_.nprec);
   if (auto* mumps = dynamic_cast<linalg::MumpsSolver*>(solver_.get())) mumps->setOptions(settings_.mumps);
+  if (auto* gcpc = dynamic_cast<linalg::GcpcSolver*>(solver_.get())) gcpc->setOptions(settings_.gcpc);
   solver_->setSymmetricByConstruction(system_.symmetricTangent());
 }
 

@@ -15,6 +15,7 @@
 
 #include "analysis/mechanical_system.hpp"
 #include "analysis/static_nonlinear.hpp"
+#include "linalg/gcpc_solver.hpp"
 #include "linalg/linear_solver.hpp"
 #include "linalg/mumps_solver.hpp"
 
@@ -25,6 +26,7 @@ struct LinearSettings {
   std::string renum = "AUTO";         // SOLVEUR/RENUM
   int nprec = 8;                      // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
   linalg::MumpsOptions mumps;         // METHODE='MUMPS': its controls
+  linalg::GcpcOptions gcpc;           // METHODE='GCPC': its controls
 };
 
 struct LinearStatistics {

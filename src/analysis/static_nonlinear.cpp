@@ -41,6 +41,7 @@ StaticNonlinear::StaticNonlinear(MechanicalSystem& system, AdditionalTerms* term
   solver_->solver->setOrdering(settings_.renum);
   solver_->solver->setSingularityDigits(settings_.nprec);
   if (auto* mumps = dynamic_cast<linalg::MumpsSolver*>(solver_->solver.get())) mumps->setOptions(settings_.mumps);
+  if (auto* gcpc = dynamic_cast<linalg::GcpcSolver*>(solver_->solver.get())) gcpc->setOptions(settings_.gcpc);
   // Contact's terms keep the check: their symmetry is not exact by construction.
   solver_->solver->setSymmetricByConstruction(!terms_ && (system_.symmetricTangent() || settings_.symmetrize));
   dualized_ = system_.dualizedImposed();

@@ -24,6 +24,7 @@
 #include "analysis/line_search.hpp"
 #include "analysis/mechanical_system.hpp"
 #include "analysis/newton_observer.hpp"
+#include "linalg/gcpc_solver.hpp"
 #include "linalg/linear_solver.hpp"
 #include "linalg/mumps_solver.hpp"
 
@@ -52,6 +53,7 @@ struct NewtonSettings {
   std::string renum = "AUTO";  // SOLVEUR/RENUM
   int nprec = 8;               // SOLVEUR/NPREC (<= 0: only a zero pivot is singular)
   linalg::MumpsOptions mumps;  // METHODE='MUMPS': its controls
+  linalg::GcpcOptions gcpc;    // METHODE='GCPC': its controls
   int subdPas = 4;     // SUBD_PAS
   int subdNiveau = 3;  // SUBD_NIVEAU (0: no cutting)
   bool subdAuto = false;    // SUBD_METHODE='AUTO' (step_cutting.hpp): no level limit

@@ -62,6 +62,7 @@ ConceptPtr mecaStatique(const Keywords& k, Session& session, ConceptPtr) {
   settings.renum = choice.renum;
   settings.nprec = choice.nprec;
   settings.mumps = choice.mumps;
+  settings.gcpc = choice.gcpc;
 
   analysis::MechanicalSystem system(problem);
   analysis::StaticLinear solver(system, settings);

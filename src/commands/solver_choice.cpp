@@ -21,7 +21,8 @@ void refuseMissingMumpsOrdering(const std::string& renum) {
 SolverChoice readSolveur(const Keywords& solveur) {
   SolverChoice c;
   c.method = solveur.text("METHODE");
-  c.renum = solveur.text("RENUM");
+  // GCPC's RENUM (its preconditioner's) is ignored: MUMPS orders as it sees fit.
+  c.renum = c.method == "GCPC" ? "AUTO" : solveur.text("RENUM");
   if (c.method == "MUMPS") {
     refuseMissingMumpsOrdering(c.renum);
     c.mumps.symmetry = solveur.text("TYPE_RESOL");
@@ -29,6 +30,16 @@ SolverChoice readSolveur(const Keywords& solveur) {
     c.mumps.preprocess = solveur.text("PRETRAITEMENTS") == "AUTO";
     c.mumps.refinement = solveur.text("POSTTRAITEMENTS");
     c.mumps.residualTolerance = solveur.real("RESI_RELA");
+  } else if (c.method == "GCPC") {
+    c.gcpc.preconditioner = solveur.text("PRE_COND");
+    if (c.gcpc.preconditioner == "LDLT_INC")
+      throw Error("SOLVEUR: PRE_COND='LDLT_INC' (code_aster's incomplete factorization) is not available with "
+                  "METHODE='GCPC' in aster-lite; PRE_COND='LDLT_SP' (the default here) or 'LDLT_DP' precondition "
+                  "with a complete factorization of an earlier matrix");
+    c.gcpc.reacPrecond = static_cast<int>(solveur.integer("REAC_PRECOND"));
+    c.gcpc.relativeResidual = solveur.real("RESI_RELA");
+    c.gcpc.maxIterations = static_cast<int>(solveur.integer("NMAX_ITER"));
+    c.gcpc.pivotPercent = static_cast<int>(solveur.integer("PCENT_PIVOT"));
   } else if (c.method == "LDLT") {
     c.method = "MULT_FRONT";
     c.renum = "AUTO";  // RCMK, a profile ordering: MULT_FRONT's fills less

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "lang/keywords.hpp"
+#include "linalg/gcpc_solver.hpp"
 #include "linalg/mumps_solver.hpp"
 
 namespace aster::lang {
@@ -14,6 +15,7 @@ struct SolverChoice {
   std::string renum;   // an ordering that solver takes
   int nprec = 8;       // <= 0: only a zero pivot is singular (STOP_SINGULIER='NON')
   linalg::MumpsOptions mumps;  // METHODE='MUMPS': TYPE_RESOL, PCENT_PIVOT, PRETRAITEMENTS, POSTTRAITEMENTS, RESI_RELA
+  linalg::GcpcOptions gcpc;    // METHODE='GCPC': PRE_COND, REAC_PRECOND, RESI_RELA, NMAX_ITER, PCENT_PIVOT
 };
 
 SolverChoice readSolveur(const Keywords& solveur);

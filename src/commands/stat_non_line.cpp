@@ -170,6 +170,7 @@ analysis::NewtonSettings readNewtonSettings(const Keywords& k) {
   settings.renum = choice.renum;
   settings.nprec = choice.nprec;
   settings.mumps = choice.mumps;
+  settings.gcpc = choice.gcpc;
   if (k.has("RECH_LINEAIRE")) {
     const auto& rl = k.factor("RECH_LINEAIRE").front();
     auto& ls = settings.lineSearchSettings;
@@ -374,11 +375,14 @@ void setInitialLawState(const InitialState& state, analysis::MechanicalSystem& s
 void reportStatistics(const analysis::StaticNonlinear& newtonSolver, const analysis::NewtonSettings& settings,
                       std::size_t instants, long long info) {
   const auto& st = newtonSolver.statistics();
+  // GCPC factorizes its preconditioner only now and then: its own count, not the matrices it was given.
+  const int factorizations =
+      settings.method == "GCPC" ? newtonSolver.solverStatistics().factorizeCount : st.factorizations;
   char buf[256];
   std::snprintf(buf, sizeof buf,
                 "STAT_NON_LINE: %zu instants, %d Newton iterations, %d factorizations, %d step cuts; "
                 "%d unknowns; %.3f s (assembly %.3f s, linear solver %.3f s)",
-                instants, st.iterations, st.factorizations, st.cuts, newtonSolver.unknownCount(),
+                instants, st.iterations, factorizations, st.cuts, newtonSolver.unknownCount(),
                 st.totalSeconds, st.assemblySeconds, st.solveSeconds);
   std::string line = buf;
   if (settings.lineSearch)
@@ -393,7 +397,11 @@ void reportStatistics(const analysis::StaticNonlinear& newtonSolver, const analy
                   "(%.3f s), %lld nonzeros in the last factors, %s",
                   settings.method.c_str(), settings.renum.c_str(), ls.ordering.empty() ? "not reported" : ls.ordering.c_str(),
                   ls.factorizeCount, ls.factorizeSeconds, ls.factorNonzeros, flops);
-    Messages::info(buf);
+    line = buf;
+    if (settings.method == "GCPC")  // factorizeCount: the preconditioner's
+      line += "; " + std::to_string(ls.krylovIterations) + " conjugate gradient iterations over " +
+              std::to_string(ls.solveCount) + " solves";
+    Messages::info(line);
   }
 }
 

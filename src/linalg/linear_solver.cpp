@@ -4,6 +4,7 @@
 
 #include "linalg/cholmod_solver.hpp"
 #include "linalg/eigen_lu_solver.hpp"
+#include "linalg/gcpc_solver.hpp"
 #include "linalg/klu_solver.hpp"
 #include "linalg/mult_front_solver.hpp"
 #include "linalg/mumps_solver.hpp"
@@ -48,10 +49,12 @@ std::unique_ptr<LinearSolver> makeLinearSolver(const std::string& methode) {
   if (methode == "CHOLMOD_LDLT") return std::make_unique<CholmodSolver>(CholmodSolver::Mode::LDLT);
   if (methode == "KLU") return std::make_unique<KluSolver>();
   if (methode == "EIGEN_LU") return std::make_unique<EigenLuSolver>();
+  if (methode == "GCPC") return std::make_unique<GcpcSolver>();
   std::ostringstream s;
   s << "unknown linear solver METHODE '" << methode << "'; allowed:";
   const auto names = linearSolverMethods();
   for (std::size_t i = 0; i < names.size(); ++i) s << (i ? ", " : " ") << "'" << names[i] << "'";
+  s << ", 'GCPC'";
   throw Error(s.str());
 }
 

@@ -40,6 +40,7 @@ struct LinearSolverStatistics {
   double numericSeconds = 0.0;    // the numeric factorizations alone (library call), total
   double firstNumericSeconds = 0.0;  // the first of them, which also touches the factor's memory first
   std::string ordering;           // fill-reducing ordering the analysis chose, when the library tells it
+  long long krylovIterations = 0;  // iterative solvers (GCPC): iterations over all solves
 };
 
 class LinearSolver {
@@ -92,13 +93,14 @@ class LinearSolver {
   SparsityPattern pattern_;  // what analyze() saw, to refuse another pattern in factorize()
 };
 
-// The names makeLinearSolver accepts.
+// The direct solvers makeLinearSolver accepts (it also takes the iterative 'GCPC').
 std::vector<std::string> linearSolverMethods();
 
 // 'MULT_FRONT' (the default: multifrontal, signed pivots, symmetric matrices; UMFPACK takes
 // over for others, mult_front_solver.hpp), 'MUMPS' (mumps_solver.hpp), 'UMFPACK', 'CHOLMOD' (supernodal LL^T, symmetric
 // positive definite only), 'CHOLMOD_LDLT' (simplicial LDL^T without pivoting, for symmetric
-// quasi-definite systems such as stiffness + Lagrange multipliers), 'KLU', 'EIGEN_LU'.
+// quasi-definite systems such as stiffness + Lagrange multipliers), 'KLU', 'EIGEN_LU', and the
+// iterative 'GCPC' (conjugate gradient for symmetric positive definite matrices, gcpc_solver.hpp).
 // Throws aster::Error on an unknown name, listing the allowed ones.
 std::unique_ptr<LinearSolver> makeLinearSolver(const std::string& methode);
 
