@@ -7,25 +7,13 @@
 #include <limits>
 #include <sstream>
 
+#include "linalg/mumps_instance.hpp"
 #include "linalg/pivot_audit.hpp"
 #include "linalg/stopwatch.hpp"
 
 namespace aster::linalg {
 
 namespace {
-
-constexpr int kUseCommWorld = -987654;  // MUMPS's code for MPI_COMM_WORLD (the sequential stand-in)
-
-std::string orderingName(int icntl7) {
-  switch (icntl7) {
-    case 0: return "AMD";
-    case 2: return "AMF";
-    case 3: return "SCOTCH";
-    case 4: return "PORD";
-    case 6: return "QAMD";
-    default: return "other";
-  }
-}
 
 bool workspaceShort(int code) { return code == -8 || code == -9 || code == -17 || code == -20; }
 
@@ -38,22 +26,7 @@ std::string failure(const char* stage, int code, int info2) {
 
 }  // namespace
 
-struct MumpsSingleSolver::Handle {
-  SMUMPS_STRUC_C id{};
-  bool started = false;
-  int& icntl(int i) { return id.icntl[i - 1]; }
-  int infog(int i) const { return id.infog[i - 1]; }
-  float rinfog(int i) const { return id.rinfog[i - 1]; }
-  void run(int job) {
-    id.job = job;
-    smumps_c(&id);
-  }
-  void stop() {
-    if (started) run(-2);
-    started = false;
-  }
-  ~Handle() { stop(); }
-};
+struct MumpsSingleSolver::Handle : MumpsInstance<SMUMPS_STRUC_C, smumps_c> {};
 
 MumpsSingleSolver::MumpsSingleSolver() : h_(std::make_unique<Handle>()) {}
 
@@ -72,13 +45,7 @@ void MumpsSingleSolver::analyze(const SparseMatrix& A) {
   factorized_ = false;
   pattern_.record(M);
   Handle& h = *h_;
-  h.stop();
-  h.id = SMUMPS_STRUC_C{};
-  h.id.comm_fortran = kUseCommWorld;
-  h.id.par = 1;  // the host works (one process)
-  h.id.sym = 2;  // general symmetric
-  h.run(-1);
-  h.started = true;
+  h.start(2);  // general symmetric
   if (h.infog(1) < 0) throw Error(failure("initialisation", h.infog(1), h.infog(2)));
   // Quiet; assembled, centralized matrix; dense centralized right-hand side and solution.
   h.icntl(1) = -1;
@@ -100,7 +67,7 @@ void MumpsSingleSolver::analyze(const SparseMatrix& A) {
   h.id.a = values_.data();
   h.run(1);
   if (h.infog(1) < 0) throw Error(failure("analysis", h.infog(1), h.infog(2)));
-  stats_.ordering = orderingName(h.infog(7));
+  stats_.ordering = mumpsOrderingName(h.infog(7));
 }
 
 void MumpsSingleSolver::loadValues(const SparseMatrix& M) {

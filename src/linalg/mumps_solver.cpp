@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "linalg/mumps_instance.hpp"
 #include "linalg/pivot_audit.hpp"
 #include "linalg/stopwatch.hpp"
 
@@ -15,7 +16,6 @@ namespace aster::linalg {
 
 namespace {
 
-constexpr int kUseCommWorld = -987654;  // MUMPS's code for MPI_COMM_WORLD (the sequential stand-in)
 constexpr double kSymmetryTolerance = 1e-10;
 
 // ICNTL(7) of each RENUM name. Debian 12's sequential MUMPS is built with SCOTCH and PORD but
@@ -25,18 +25,6 @@ struct OrderingCode {
   int icntl7;
 };
 constexpr OrderingCode kOrderings[] = {{"AUTO", 7}, {"AMD", 0}, {"AMF", 2}, {"SCOTCH", 3}, {"PORD", 4}, {"QAMD", 6}};
-
-std::string orderingName(int icntl7) {
-  switch (icntl7) {
-    case 0: return "AMD";
-    case 2: return "AMF";
-    case 3: return "SCOTCH";
-    case 4: return "PORD";
-    case 5: return "METIS";
-    case 6: return "QAMD";
-    default: return "other";
-  }
-}
 
 // What INFOG(1) < 0 means (MUMPS 5.5 user's guide, section "Error diagnostics").
 std::string mumpsError(int code, int info2) {
@@ -80,23 +68,7 @@ bool denseGraph(const SparseMatrix& M) {
 
 }  // namespace
 
-struct MumpsSolver::Handle {
-  DMUMPS_STRUC_C id{};
-  bool started = false;
-  int icntl(int i) const { return id.icntl[i - 1]; }
-  int& icntl(int i) { return id.icntl[i - 1]; }
-  int infog(int i) const { return id.infog[i - 1]; }
-  double rinfog(int i) const { return id.rinfog[i - 1]; }
-  void run(int job) {
-    id.job = job;
-    dmumps_c(&id);
-  }
-  void stop() {
-    if (started) run(-2);
-    started = false;
-  }
-  ~Handle() { stop(); }
-};
+struct MumpsSolver::Handle : MumpsInstance<DMUMPS_STRUC_C, dmumps_c> {};
 
 MumpsSolver::MumpsSolver() : h_(std::make_unique<Handle>()) {}
 
@@ -121,13 +93,7 @@ void MumpsSolver::setOptions(const MumpsOptions& options) {
 
 // A new MUMPS instance (JOB = -1): SYM is fixed for its life.
 void MumpsSolver::start(int sym) {
-  h_->stop();
-  h_->id = DMUMPS_STRUC_C{};
-  h_->id.comm_fortran = kUseCommWorld;
-  h_->id.par = 1;  // the host works (one process)
-  h_->id.sym = sym;
-  h_->run(-1);
-  h_->started = true;
+  h_->start(sym);
   if (h_->infog(1) < 0) throw Error("MUMPS: initialisation failed: " + mumpsError(h_->infog(1), h_->infog(2)));
   sym_ = sym;
   pivotPercent_ = options_.pivotPercent;
@@ -218,7 +184,7 @@ void MumpsSolver::runAnalysis() {
   if (densePord) h.icntl(7) = 0;
   h.run(1);
   if (h.infog(1) < 0) throw Error("MUMPS: analysis failed: " + mumpsError(h.infog(1), h.infog(2)));
-  stats_.ordering = orderingName(h.infog(7));
+  stats_.ordering = mumpsOrderingName(h.infog(7));
   if (densePord) {
     stats_.ordering += " (a dense matrix, which PORD cannot order)";
   } else if (ordering_ != "AUTO" && stats_.ordering != ordering_) {
