@@ -416,6 +416,8 @@ void StaticNonlinear::settleStatuses(Eigen::VectorXd& U, Step& step, Iteration& 
   const auto start = Clock::now();
   const Eigen::VectorXd Ubefore = U - it.correction;
   const Eigen::VectorXd solved = it.correction;
+  std::vector<AdditionalTerms::StatusChange> changes, applied;
+  if (!terms_->linearizedStatusChanges(Ubefore, it.correction, changes)) return;
   // The terms' statuses read dU on their elements' unknowns: the rows kept.
   fem::ElementDofs elements;
   terms_->elementDofs(elements);
@@ -427,21 +429,20 @@ void StaticNonlinear::settleStatuses(Eigen::VectorXd& U, Step& step, Iteration& 
   for (int i = 0; i < n_; ++i)
     if (onTerms[i]) rows.push_back(i);
   LowRankUpdate update(*solver_->solver, K_, step.fixed, solvedRhs_, solved, std::move(rows));
-  std::vector<AdditionalTerms::StatusChange> changes, applied;
   for (int loop = 0; loop < kStatusLoops; ++loop) {
-    changes.clear();
-    if (!terms_->linearizedStatusChanges(Ubefore, it.correction, changes)) break;
     if (update.solves() + update.solvesNeeded(changes) > kStatusSolves) break;
     Eigen::VectorXd x;
     if (!update.solve(changes, x, false)) break;
     it.correction = std::move(x);
     applied = std::move(changes);
     ++stats_.statusLoops;
+    changes.clear();
+    if (!terms_->linearizedStatusChanges(Ubefore, it.correction, changes)) break;
   }
   if (!applied.empty() && !update.solve(applied, it.correction, true)) it.correction = solved;
   step.statusesSettled = !applied.empty();
   stats_.statusSolves += update.solves();
-  U = Ubefore + it.correction;
+  if (it.correction != solved) U += it.correction - solved;
   // The supports' prediction r + K dU: the rows of the changed columns.
   if (dualizedPredictionValid_ && it.correction != solved)
     for (const auto& c : applied)
