@@ -2,6 +2,8 @@
 // their own appended after the displacement DOFs: contact.
 #pragma once
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -29,6 +31,31 @@ class AdditionalTerms {
   // After a Newton correction: updates discrete statuses (active set); returns
   // true when a status changed, so the iteration cannot be the last.
   virtual bool updateStatus(const Eigen::VectorXd& U) = 0;
+  // The active-set loop inside a Newton iteration (static_nonlinear.cpp,
+  // low_rank_update.hpp). One change of the linear system when a status
+  // changes: the equation of the terms' unknown `unknown` becomes
+  // row . dU = rhs (global indices, the diagonal included, duplicates
+  // summed); when `symmetric`, its column becomes the row too, else the
+  // column stays as assembled.
+  struct StatusChange {
+    int unknown = -1;
+    std::vector<std::pair<int, double>> row;
+    double rhs = 0;
+    bool symmetric = false;
+  };
+  // After the Newton correction dU from U, solved with the statuses of the
+  // last assemble() at U (or of the last call's changes): the statuses of
+  // the LINEARIZED problem at U + dU. Returns false when they are those dU
+  // was solved with (settled), or when the linear system of the new statuses
+  // is not one of these changes; else `changes` holds every change from the
+  // assembled system, and the next call compares with these statuses.
+  virtual bool linearizedStatusChanges(const Eigen::VectorXd& U, const Eigen::VectorXd& dU,
+                                       std::vector<StatusChange>& changes) {
+    (void)U;
+    (void)dU;
+    (void)changes;
+    return false;
+  }
   // A short state for the convergence table, as of the last assemble(): for
   // contact, the active nodes or points and a contact residual
   // ("12 active nodes, residual 1.23E-16"; see contact_terms.hpp).

@@ -140,6 +140,7 @@ class MortarContact final : public ContactBase {
   void assemble(const Eigen::VectorXd& U, Eigen::VectorXd& r, const fem::AssemblyPattern& pattern, int firstElement,
                 linalg::SparseMatrix* K) const override {
     evaluate(U, initialIteration_);
+    solvedStatus_ = active_;
     int e = firstElement;
     Eigen::VectorXd res;
     Eigen::MatrixXd Ke;
@@ -160,6 +161,52 @@ class MortarContact final : public ContactBase {
   // The statuses are chosen at every assembly (semi-smooth Newton): the
   // residual of the multipliers' equations already says whether they hold.
   bool updateStatus(const Eigen::VectorXd&) override { return false; }
+  // The active-set loop releases only: a multiplier active at U is released
+  // when, at U + dU of the problem linearized at U (its weighted gap
+  // gt_k + dgt_k/du . dU, lambda_k of U + dU), the criterion of evaluate()
+  // makes it inactive; its equation becomes S (lambda_k / S) = 0, and its
+  // column stays (the linearization of its force lambda_k dgt_k/du at
+  // lambda_k + dlambda_k = 0; lambda_k d2gt_k/du2 stays in the tangent).
+  // Activations are left to the next iteration's statuses, from the gaps
+  // themselves: one from a linearized gap where the gap itself stays open
+  // (a curved contact sliding, tests/program/ironing) would leave a
+  // multiplier at U + dU that the next residual, inactive, leaves out; the
+  // semi-smooth Newton then cycles or takes twice the iterations.
+  bool linearizedStatusChanges(const Eigen::VectorXd& U, const Eigen::VectorXd& dU,
+                               std::vector<StatusChange>& changes) override {
+    std::vector<double> linear(gap_);
+    for (std::size_t p = 0; p < pairs_.size(); ++p) {
+      const auto& sc = cells_[pairs_[p].slave];
+      const auto& t = terms_[p];
+      const int q = 2 * (t.slaveNodes + t.masterNodes);
+      const auto dofs = pairDofs(pairs_[p]);
+      for (std::size_t m = 0; m < sc.multipliers.size(); ++m) {
+        const int k = sc.multipliers[m];
+        if (!active_[k]) continue;
+        for (int a = 0; a < sc.nodes; ++a)
+          if (sc.weight[m][a] != 0)
+            for (int i = 0; i < q; ++i)
+              if (dofs[i] >= 0) linear[k] += sc.weight[m][a] * t.weightedGap[a].g(i) * dU(dofs[i]);
+      }
+    }
+    const Eigen::VectorXd next_U = U + dU;
+    std::vector<char> next(active_);
+    for (std::size_t k = 0; k < lags_.size(); ++k) {
+      if (!active_[k]) continue;
+      double g = linear[k] / lags_[k].share;
+      if (std::fabs(g) <= roundOff_[lags_[k].zone]) g = 0;
+      next[k] = lambda(k, next_U) + statusCoefficient(k) * g <= 0;
+    }
+    if (next == solvedStatus_) return false;
+    for (std::size_t k = 0; k < lags_.size(); ++k) {
+      if (next[k] == active_[k]) continue;
+      const int unknown = first_ + static_cast<int>(k);
+      const double S = scales_[lags_[k].zone];
+      changes.push_back({unknown, {{unknown, S}}, -S * U(unknown), false});
+    }
+    solvedStatus_ = next;
+    return true;
+  }
   std::string statusText() const override {
     return std::to_string(std::count(active_.begin(), active_.end(), 1)) + " active nodes, residual " +
            format::scientific(residual_, 2);
@@ -470,6 +517,7 @@ class MortarContact final : public ContactBase {
   mutable std::vector<double> fineGap_, fineCovered_;  // per slave node: gt_j, and the paired part of D_j
   mutable std::vector<double> gap_, covered_;          // per LAGS_C: gt_k, and the paired part of D_k
   mutable std::vector<char> active_;
+  mutable std::vector<char> solvedStatus_;  // the statuses the last correction was solved with
   mutable double residual_ = 0;
 };
 

@@ -76,6 +76,8 @@ struct NewtonStatistics {
   int iterations = 0, factorizations = 0, cuts = 0;
   int tangentAssemblies = 0;  // residual and tangent; residuals alone are not counted
   int lineSearchTrials = 0;   // residuals evaluated by the line search
+  int statusLoops = 0;        // re-solves of the active-set loop (settleStatuses)
+  int statusSolves = 0;       // the solves they took (low_rank_update.hpp)
   double assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;
 };
 
@@ -112,6 +114,7 @@ class StaticNonlinear {
   Verdict convergence(const Eigen::VectorXd& U, const Step& step, Iteration& it) const;
   void factorAndSolve(Eigen::VectorXd& U, const Step& step, Iteration& it);
   void solveWithRelations(Eigen::VectorXd& U, const Step& step, Iteration& it);
+  void settleStatuses(Eigen::VectorXd& U, Step& step, Iteration& it);
   void searchLine(Eigen::VectorXd& U, const Step& step, Iteration& it);
   void factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it);
   // The factorization held eliminated the same fixed unknowns and relations as the step's.
@@ -131,6 +134,7 @@ class StaticNonlinear {
   linalg::SparseMatrix K_, Kelastic_;
   linalg::SparseMatrix KelasticEliminated_;  // Kelastic_ with the fixed unknowns eliminated
   Eigen::VectorXd fint_, fext_, r_;
+  Eigen::VectorXd solvedRhs_;  // with additional terms: the right-hand side of the last solve
   NewtonStatistics stats_;
   struct SolverHolder;
   std::shared_ptr<SolverHolder> solver_;

@@ -387,6 +387,9 @@ void reportStatistics(const analysis::StaticNonlinear& newtonSolver, const analy
   std::string line = buf;
   if (settings.lineSearch)
     line += "; line search: " + std::to_string(st.lineSearchTrials) + " residuals evaluated";
+  if (st.statusLoops > 0)
+    line += "; active-set loop: " + std::to_string(st.statusLoops) + " re-solves with new statuses (" +
+            std::to_string(st.statusSolves) + " solves)";
   Messages::info(line);
   if (info >= 2) {
     const auto& ls = newtonSolver.solverStatistics();
