@@ -12,9 +12,12 @@ fail() { echo "FAIL ($case): $*"; [ -f "$work/log" ] && cat "$work/log"; exit 1;
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work" || exit 1
-# Whatever the caller's environment: the variables the program might set itself.
-clean=(env -u OPENBLAS_NUM_THREADS -u OPENBLAS_CORETYPE -u OMP_NUM_THREADS -u GOTO_NUM_THREADS
-       -u GLIBC_TUNABLES -u ASTER_BLAS_SELECTED -u ASTER_BLAS_THREADS)
+# Whatever the caller's environment: none of the variables the program might set
+# itself, nor any other of their families the caller had (OPENBLAS_L2_SIZE, ...).
+clean=(env -u OMP_NUM_THREADS -u GOTO_NUM_THREADS -u GLIBC_TUNABLES)
+for name in $(compgen -e); do
+  case $name in OPENBLAS_* | ASTER_BLAS*) clean+=(-u "$name") ;; esac
+done
 
 case $case in
 one_execve)
