@@ -134,9 +134,12 @@ bool LowRankUpdate::solve(const std::vector<AdditionalTerms::StatusChange>& chan
       Vy(a) += val * y(r);
       for (int c = 0; c < p; ++c) C(a, c) += val * Z[c].at(r);
     }
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(C);
-  if (!lu.isInvertible()) return false;
-  const Eigen::VectorXd w = lu.solve(Vy);
+  Eigen::VectorXd w(p);  // no change: w is empty and x is M^-1 b'
+  if (p > 0) {
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(C);
+    if (!lu.isInvertible()) return false;
+    w = lu.solve(Vy);
+  }
   if (full) {
     // x = M^-1 (b' - U w): one more solve.
     Eigen::VectorXd rhs = b_;
