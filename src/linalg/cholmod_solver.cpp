@@ -65,10 +65,8 @@ std::vector<int> constraintSets(const SparseMatrix& A, int multipliersFrom, int&
 // 2.5 -> 2.1 s, 2 % fewer flops per factorization; N = 128: 0.49 -> 0.38 s, 1.6 % more).
 // Returns the permutation of the columns, or nothing when the columns do not pair up or
 // CHOLMOD has no METIS.
-std::vector<int> nodeNestedDissection(const SparseMatrix& M, cholmod_common& c) {
-  const int n = static_cast<int>(M.cols());
-  const int* outer = M.outerIndexPtr();
-  const int* inner = M.innerIndexPtr();
+// The pattern is given as compressed columns (outer, inner: sorted rows, both triangles).
+std::vector<int> nodeNestedDissection(int n, const int* outer, const int* inner, cholmod_common& c) {
   std::vector<int> group(n), first{0};
   for (int j = 1; j < n; ++j) {
     const bool same = outer[j + 1] - outer[j] == outer[j] - outer[j - 1] &&
@@ -110,6 +108,61 @@ std::vector<int> nodeNestedDissection(const SparseMatrix& M, cholmod_common& c) 
   return perm;
 }
 
+std::vector<int> nodeNestedDissection(const SparseMatrix& M, cholmod_common& c) {
+  return nodeNestedDissection(static_cast<int>(M.cols()), M.outerIndexPtr(), M.innerIndexPtr(), c);
+}
+
+// A saddle point system (the multipliers flagged in `sets`) ordered as one without them:
+// nested dissection of the other unknowns by nodes, each multiplier placed right after the
+// last of the unknowns its column couples it to. Those are eliminated before it, so its
+// pivot is a Schur complement's (negative), not its zero diagonal; the elimination tree
+// keeps it above them, so the postorder does too. Constrained AMD (every multiplier last)
+// costs more flops on a large mesh, and its separators lose the nested dissection's
+// balance (SSNP150 with LAC, N = 256: see docs/performance.md). Returns nothing when the
+// unknowns do not pair into nodes.
+std::vector<int> multipliersAfterTheirUnknowns(const SparseMatrix& M, const std::vector<int>& sets,
+                                               cholmod_common& c) {
+  const int n = static_cast<int>(M.cols());
+  const int* outer = M.outerIndexPtr();
+  const int* inner = M.innerIndexPtr();
+  std::vector<int> freeIndex(n, -1), freeColumns;
+  for (int j = 0; j < n; ++j)
+    if (!sets[j]) {
+      freeIndex[j] = static_cast<int>(freeColumns.size());
+      freeColumns.push_back(j);
+    }
+  const int nf = static_cast<int>(freeColumns.size());
+  std::vector<int> p{0}, i;  // the pattern of the unknowns that are not multipliers
+  i.reserve(static_cast<size_t>(outer[n]));
+  for (int j : freeColumns) {
+    for (int k = outer[j]; k < outer[j + 1]; ++k)
+      if (freeIndex[inner[k]] >= 0) i.push_back(freeIndex[inner[k]]);
+    p.push_back(static_cast<int>(i.size()));
+  }
+  const std::vector<int> freeOrder = nodeNestedDissection(nf, p.data(), i.data(), c);
+  if (freeOrder.empty()) return {};
+  std::vector<int> place(n, -1);
+  for (int k = 0; k < nf; ++k) place[freeColumns[freeOrder[k]]] = k;
+  std::vector<std::pair<int, int>> after;  // (place of the last unknown coupled, multiplier)
+  for (int j = 0; j < n; ++j) {
+    if (!sets[j]) continue;
+    int last = nf;  // coupled to no other unknown: at the end
+    for (int k = outer[j]; k < outer[j + 1]; ++k)
+      if (!sets[inner[k]]) last = last == nf ? place[inner[k]] : std::max(last, place[inner[k]]);
+    after.push_back({last, j});
+  }
+  std::stable_sort(after.begin(), after.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<int> perm;
+  perm.reserve(n);
+  size_t a = 0;
+  for (int k = 0; k < nf; ++k) {
+    perm.push_back(freeColumns[freeOrder[k]]);
+    for (; a < after.size() && after[a].first == k; ++a) perm.push_back(after[a].second);
+  }
+  for (; a < after.size(); ++a) perm.push_back(after[a].second);
+  return perm;
+}
+
 }  // namespace
 
 CholmodSolver::CholmodSolver(Mode mode) : mode_(mode), h_(std::make_unique<Handles>()) {
@@ -139,12 +192,20 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   int constrained = 0;
   const std::vector<int> sets =
       mode_ != Mode::Cholesky ? constraintSets(M, multipliersFrom_, constrained) : std::vector<int>();
+  bool multipliersInside = false;
   if (constrained > 0) {
-    // Multipliers after every other unknown: constrained AMD, then analysis of that order.
-    std::vector<int> sets_copy = sets;
-    std::vector<int> perm(sets.size());
-    if (!cholmod_camd(&view, nullptr, 0, sets_copy.data(), perm.data(), &c))
-      throw Error(name() + ": constrained ordering failed: " + cholmodStatus(c.status));
+    // Large and factorized many times: nested dissection, each multiplier after its
+    // unknowns. Otherwise every multiplier after every other unknown: constrained AMD.
+    std::vector<int> perm;
+    if (ordering_ == "AUTO" && M.rows() >= kNestedDissectionSize && factorizationsPerAnalysis_ > kFewFactorizations)
+      perm = multipliersAfterTheirUnknowns(M, sets, c);
+    multipliersInside = !perm.empty();
+    if (perm.empty()) {
+      std::vector<int> sets_copy = sets;
+      perm.resize(sets.size());
+      if (!cholmod_camd(&view, nullptr, 0, sets_copy.data(), perm.data(), &c))
+        throw Error(name() + ": constrained ordering failed: " + cholmodStatus(c.status));
+    }
     const int savedMethods = c.nmethods;
     const int savedOrdering = c.method[0].ordering;
     c.nmethods = 1;
@@ -192,7 +253,11 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   if (!h_->factor) throw Error(name() + ": symbolic analysis failed: " + cholmodStatus(c.status));
   switch (h_->factor->ordering) {
     case CHOLMOD_NATURAL: stats_.ordering = "natural"; break;
-    case CHOLMOD_GIVEN: stats_.ordering = constrained > 0 ? "CAMD (multipliers last)" : "NESDIS (nodes)"; break;
+    case CHOLMOD_GIVEN:
+      stats_.ordering = multipliersInside ? "NESDIS (nodes, multipliers after their unknowns)"
+                        : constrained > 0 ? "CAMD (multipliers last)"
+                                          : "NESDIS (nodes)";
+      break;
     case CHOLMOD_AMD: stats_.ordering = "AMD"; break;
     case CHOLMOD_METIS: stats_.ordering = "METIS"; break;
     case CHOLMOD_NESDIS: stats_.ordering = "NESDIS"; break;

@@ -327,6 +327,52 @@ TEST(MultFront, NamedMultipliersStayLastWhenTheyBecomeActive) {
   }
 }
 
+// A large contact system (two unknowns per node, as plane mechanics; multipliers tying
+// n . u of a node to that of another, n = (0.6, 0.8)): nested dissection of the nodes, each
+// multiplier after the unknowns it ties, and no pivot needs pivoting, whether the
+// multipliers are inactive, active or penalised.
+TEST(MultFront, LargeContactSystemsAreOrderedByNodesWithTheMultipliersInside) {
+  const int m = 110, nodes = m * m, n = 2 * nodes, constraints = 40;
+  auto system = [&](bool active, double penalty) {
+    Triplets laplacian, t;
+    laplacian2d(m, laplacian);
+    const double block[2][2] = {{2.0, 1.0}, {1.0, 2.0}};
+    for (const auto& e : laplacian)
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) t.emplace_back(2 * e.row() + a, 2 * e.col() + b, e.value() * block[a][b]);
+    for (int c = 0; c < constraints; ++c) {
+      const int slave = 17 * c + 5, master = (nodes - 1) - 29 * c, row = n + c;
+      const double on = active ? 1.0 : 0.0;
+      for (auto [col, v] : {std::pair{2 * slave, 0.6}, std::pair{2 * slave + 1, 0.8}, std::pair{2 * master, -0.6},
+                            std::pair{2 * master + 1, -0.8}}) {
+        t.emplace_back(row, col, on * v);
+        t.emplace_back(col, row, on * v);
+      }
+      t.emplace_back(row, row, !active ? 1.0 : penalty > 0 ? -1.0 / penalty : 0.0);
+    }
+    return fromTriplets(n + constraints, t);
+  };
+  const SparseMatrix inactive = system(false, 0.0), active = system(true, 0.0), penalised = system(true, 50.0);
+  MultFrontSolver solver;
+  solver.setMultipliersFrom(n);
+  solver.analyze(inactive);
+  EXPECT_EQ(solver.statistics().ordering, "NESDIS (nodes, multipliers after their unknowns)");
+  for (const SparseMatrix* A : {&inactive, &active, &penalised, &inactive}) {
+    const Eigen::VectorXd xKnown = knownSolution(n + constraints), b = *A * xKnown;
+    solver.factorize(*A);
+    Eigen::VectorXd x;
+    solver.solve(b, x);
+    EXPECT_LT((x - xKnown).norm() / xKnown.norm(), 1e-9);
+  }
+  EXPECT_EQ(solver.handedOver(), "");
+  // Factorized only a few times (one linear solve), the same system takes constrained AMD.
+  MultFrontSolver once;
+  once.setMultipliersFrom(n);
+  once.setFactorizationsPerAnalysis(1);
+  expectSolves(once, active, 1e-9);
+  EXPECT_EQ(once.statistics().ordering, "CAMD (multipliers last)");
+}
+
 // Not named, an active multiplier may come before the unknowns it ties: a zero pivot,
 // and UMFPACK takes over, once, with the same solution.
 TEST(MultFront, ZeroPivotHandsOverToUmfpack) {
