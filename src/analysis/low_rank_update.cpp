@@ -38,17 +38,46 @@ bool LowRankUpdate::decoupled(int i) const {
   return M_.coeff(i, i) != 0;
 }
 
-// M^-1 u on the kept rows.
-const Eigen::VectorXd& LowRankUpdate::inverseTimes(int key, const Sparse& u) {
-  auto it = kept_.find(key);
-  if (it != kept_.end()) return it->second;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(M_.rows()), z;
-  for (const auto& [j, a] : u) rhs(j) += a;
-  solver_.solve(rhs, z);
-  ++solves_;
-  Eigen::VectorXd kept(static_cast<Eigen::Index>(rows_.size()));
-  for (std::size_t r = 0; r < rows_.size(); ++r) kept(static_cast<Eigen::Index>(r)) = z(rows_[r]);
-  return kept_.emplace(key, std::move(kept)).first->second;
+// M^-1 u on the kept rows, for each (key, u) not kept yet: one solve with as many
+// right-hand sides, which reads the factor once.
+void LowRankUpdate::inverseTimes(const std::vector<std::pair<int, Sparse>>& columns) {
+  std::vector<const std::pair<int, Sparse>*> missing;
+  for (const auto& c : columns)
+    if (!kept_.count(c.first)) missing.push_back(&c);
+  if (missing.empty()) return;
+  const Eigen::Index k = static_cast<Eigen::Index>(missing.size());
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(M_.rows(), k), z;
+  for (Eigen::Index c = 0; c < k; ++c)
+    for (const auto& [j, a] : missing[c]->second) rhs(j, c) += a;
+  solver_.solveMany(rhs, z);
+  solves_ += static_cast<int>(k);
+  for (Eigen::Index c = 0; c < k; ++c) {
+    Eigen::VectorXd kept(static_cast<Eigen::Index>(rows_.size()));
+    for (std::size_t r = 0; r < rows_.size(); ++r) kept(static_cast<Eigen::Index>(r)) = z(rows_[r], c);
+    kept_.emplace(missing[c]->first, std::move(kept));
+  }
+}
+
+// The new row of a change, the fixed unknowns' terms left out (they go to the right-hand
+// side with their values x0, as the solve did).
+std::map<int, double> LowRankUpdate::freeRow(const AdditionalTerms::StatusChange& c) const {
+  std::map<int, double> row;
+  for (const auto& [j, a] : c.row)
+    if (!fixed_[j]) row[j] += a;
+  return row;
+}
+
+// A symmetric change's column off the diagonal: new (the row's) minus old.
+LowRankUpdate::Sparse LowRankUpdate::columnChange(int i, const std::map<int, double>& row) const {
+  std::map<int, double> u;
+  for (const auto& [j, a] : row)
+    if (j != i) u[j] += a;
+  for (linalg::SparseMatrix::InnerIterator e(M_, i); e; ++e)
+    if (e.row() != i) u[e.row()] -= e.value();
+  Sparse us;
+  for (const auto& [j, a] : u)
+    if (a != 0) us.push_back({j, a});
+  return us;
 }
 
 int LowRankUpdate::solvesNeeded(const std::vector<AdditionalTerms::StatusChange>& changes) const {
@@ -86,15 +115,21 @@ bool LowRankUpdate::solve(const std::vector<AdditionalTerms::StatusChange>& chan
     }
     return out;
   };
+  // Every solve this call needs, at once.
+  std::vector<std::pair<int, Sparse>> needed;
+  for (const auto& c : changes) {
+    if (!decoupled(c.unknown)) needed.push_back({2 * c.unknown, {{c.unknown, 1.0}}});
+    if (!c.symmetric) continue;
+    Sparse us = columnChange(c.unknown, freeRow(c));
+    if (!us.empty()) needed.push_back({2 * c.unknown + 1, std::move(us)});
+  }
+  inverseTimes(needed);
   for (const auto& c : changes) {
     const int i = c.unknown;
-    // The new row, the fixed unknowns' terms moved to the right-hand side (as the solve did).
-    std::map<int, double> row;
+    const std::map<int, double> row = freeRow(c);
     double rhs = c.rhs;
-    for (const auto& [j, a] : c.row) {
+    for (const auto& [j, a] : c.row)
       if (fixed_[j]) rhs -= a * x0_(j);
-      else row[j] += a;
-    }
     std::map<int, double> v = row;
     for (const auto& [j, a] : oldRow(i)) v[j] -= a;
     Column ei;
@@ -102,7 +137,7 @@ bool LowRankUpdate::solve(const std::vector<AdditionalTerms::StatusChange>& chan
       ei.unit = at_[i];
       ei.scale = 1.0 / M_.coeff(i, i);
     } else {
-      ei.kept = &inverseTimes(2 * i, {{i, 1.0}});
+      ei.kept = &kept_.at(2 * i);
     }
     ei.addTo(y, rhs - b_(i));
     db.push_back({i, rhs - b_(i)});
@@ -110,18 +145,10 @@ bool LowRankUpdate::solve(const std::vector<AdditionalTerms::StatusChange>& chan
     V.push_back(kept(Sparse(v.begin(), v.end())));
     Z.push_back(ei);
     if (!c.symmetric) continue;
-    // The column off the diagonal: new (the row's) minus old.
-    std::map<int, double> u;
-    for (const auto& [j, a] : row)
-      if (j != i) u[j] += a;
-    for (linalg::SparseMatrix::InnerIterator e(M_, i); e; ++e)
-      if (e.row() != i) u[e.row()] -= e.value();
-    Sparse us;
-    for (const auto& [j, a] : u)
-      if (a != 0) us.push_back({j, a});
+    const Sparse us = columnChange(i, row);
     if (us.empty()) continue;
     Column col;
-    col.kept = &inverseTimes(2 * i + 1, us);
+    col.kept = &kept_.at(2 * i + 1);
     U.push_back(us);
     V.push_back(kept({{i, 1.0}}));
     Z.push_back(col);

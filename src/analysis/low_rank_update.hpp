@@ -11,11 +11,12 @@
 //   x = y - Z w = M^-1 (b' - U w),
 // with M^-1 b' = x0 + M^-1 (b' - b) from the solution x0 of M x0 = b (b'
 // differs from b in the changed rows only). Each M^-1 u costs a solve, kept for the next
-// call (the same M): one per unknown whose row changes (none when unknown i
-// is decoupled in M: its row and column hold their diagonal only), one more
-// when its column changes too. Only `rows` of them are kept (the rows where
-// the changes are, and where their caller reads x between calls): x there is
-// y - Z w; the whole x takes one more solve, M^-1 (b' - U w).
+// call (the same M): one per unknown whose row changes (none when unknown i is
+// decoupled in M: its row and column hold their diagonal only), one more when its
+// column changes too; those of one call are one solve with as many right-hand
+// sides. Only `rows` of them are kept (the rows where the changes are, and where
+// their caller reads x between calls): x there is y - Z w; the whole x takes one
+// more solve, M^-1 (b' - U w).
 #pragma once
 #include <map>
 #include <stdexcept>
@@ -51,7 +52,9 @@ class LowRankUpdate {
   using Sparse = std::vector<std::pair<int, double>>;
   Sparse oldRow(int i) const;
   bool decoupled(int i) const;
-  const Eigen::VectorXd& inverseTimes(int key, const Sparse& u);
+  void inverseTimes(const std::vector<std::pair<int, Sparse>>& columns);
+  std::map<int, double> freeRow(const AdditionalTerms::StatusChange& c) const;
+  Sparse columnChange(int i, const std::map<int, double>& row) const;
 
   const linalg::LinearSolver& solver_;
   const linalg::SparseMatrix& M_;

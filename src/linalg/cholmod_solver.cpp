@@ -413,4 +413,23 @@ void CholmodSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   cholmod_free_dense(&solution, &h_->common);
 }
 
+void CholmodSolver::solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
+  if (!multifrontal_ || B.cols() < 2) {
+    LinearSolver::solveMany(B, X);
+    return;
+  }
+  ScopedSeconds t(stats_.solveSeconds, stats_.solveCount);
+  if (B.cols() > 0) requireReadyToSolve(factorized_, B.col(0));
+  ScopedBlasThreads one(1);
+  const cholmod_factor* L = h_->factor;
+  const int* perm = static_cast<const int*>(L->Perm);
+  const Eigen::Index n = static_cast<Eigen::Index>(L->n);
+  Eigen::MatrixXd Y(n, B.cols());
+  for (Eigen::Index k = 0; k < n; ++k) Y.row(k) = B.row(perm ? perm[k] : k);
+  multifrontal_->solve(static_cast<const double*>(L->x), negativePivots_ ? pivots_.data() : nullptr, Y.data(),
+                       static_cast<int>(Y.cols()));
+  X.resize(n, B.cols());
+  for (Eigen::Index k = 0; k < n; ++k) X.row(perm ? perm[k] : k) = Y.row(k);
+}
+
 }  // namespace aster::linalg

@@ -33,6 +33,7 @@ class CholmodSolver : public LinearSolver {
   void analyze(const SparseMatrix& A) override;
   void factorize(const SparseMatrix& A) override;
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
+  void solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const override;
   std::string name() const override {
     return mode_ == Mode::Cholesky ? "CHOLMOD" : mode_ == Mode::LDLT ? "CHOLMOD_LDLT" : "MULT_FRONT";
   }

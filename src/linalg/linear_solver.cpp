@@ -14,6 +14,15 @@ namespace aster::linalg {
 
 LinearSolver::~LinearSolver() = default;
 
+void LinearSolver::solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
+  X.resize(B.rows(), B.cols());
+  Eigen::VectorXd x;
+  for (Eigen::Index c = 0; c < B.cols(); ++c) {
+    solve(B.col(c), x);
+    X.col(c) = x;
+  }
+}
+
 void LinearSolver::requireReadyToSolve(bool factorized, const Eigen::VectorXd& b) const {
   if (!factorized) throw Error(name() + ": solve() called without a successful factorize()");
   if (b.size() != pattern_.size()) {

@@ -59,6 +59,11 @@ void MultFrontSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const 
   gatherStatistics();
 }
 
+void MultFrontSolver::solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
+  active().solveMany(B, X);
+  gatherStatistics();
+}
+
 void MultFrontSolver::gatherStatistics() const {
   const LinearSolverStatistics& s = multFront_->statistics();
   stats_ = umfpack_ ? umfpack_->statistics() : s;

@@ -25,6 +25,7 @@ class MultFrontSolver : public LinearSolver {
   void analyze(const SparseMatrix& A) override;
   void factorize(const SparseMatrix& A) override;
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
+  void solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const override;
   std::string name() const override { return "MULT_FRONT"; }
   std::vector<std::string> orderings() const override { return {"AUTO", "AMD", "METIS", "SANS"}; }
 

@@ -493,9 +493,11 @@ int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, doubl
 // less its children's update vectors (L21 z of the columns below them, carried up to the
 // front that owns each row, as the factorization carries its update matrices); then
 // z := S z; then L^T w = z, parents first, each front reading the rows below it from its
-// ancestors' results.
-void MultifrontalCholesky::solve(const double* values, const double* pivots, double* y) const {
+// ancestors' results. With several right-hand sides the vectors are u x nrhs blocks and
+// each front's L is read once for all of them (dtrsm, dgemm).
+void MultifrontalCholesky::solve(const double* values, const double* pivots, double* y, int nrhs) const {
   const SupernodalStructure& S = structure_;
+  const int n = S.n;
   Updates updates(S.supernodeCount);
   const int one = 1;
   const double plusOne = 1.0, minusOne = -1.0;
@@ -504,24 +506,34 @@ void MultifrontalCholesky::solve(const double* values, const double* pivots, dou
     const int m = S.rowStart[s + 1] - S.rowStart[s], u = m - width;
     const double* block = values + S.valueStart[s];
     double* own = y + k1;
-    double* below = u > 0 ? new double[u]() : nullptr;
+    double* below = u > 0 ? new double[static_cast<size_t>(u) * nrhs]() : nullptr;
     updates[s].reset(below);
     for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
       const int c = children_[e];
       const int cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);
       const int* relative = relative_.data() + relativeStart_[c];
       const double* update = updates[c].get();
-      for (int i = 0; i < cu; ++i) {
-        const int r = relative[i];
-        if (r < width)
-          own[r] -= update[i];
-        else
-          below[r - width] += update[i];
+      for (int r = 0; r < nrhs; ++r) {
+        double* ownR = own + static_cast<size_t>(r) * n;
+        double* belowR = below + static_cast<size_t>(r) * u;
+        const double* updateR = update + static_cast<size_t>(r) * cu;
+        for (int i = 0; i < cu; ++i) {
+          const int row = relative[i];
+          if (row < width)
+            ownR[row] -= updateR[i];
+          else
+            belowR[row - width] += updateR[i];
+        }
       }
       updates[c].reset();
     }
-    dtrsv_("L", "N", "N", &width, block, &m, own, &one);
-    if (u > 0) dgemv_("N", &u, &width, &plusOne, block + width, &m, own, &one, &plusOne, below, &one);
+    if (nrhs == 1) {
+      dtrsv_("L", "N", "N", &width, block, &m, own, &one);
+      if (u > 0) dgemv_("N", &u, &width, &plusOne, block + width, &m, own, &one, &plusOne, below, &one);
+    } else {
+      dtrsm_("L", "L", "N", "N", &width, &nrhs, &plusOne, block, &m, own, &n);
+      if (u > 0) dgemm_("N", "N", &u, &nrhs, &width, &plusOne, block + width, &m, own, &n, &plusOne, below, &u);
+    }
   });
   forEachFront(false, [&](int s) {
     const int k1 = S.firstColumn[s], width = S.firstColumn[s + 1] - k1;
@@ -530,14 +542,22 @@ void MultifrontalCholesky::solve(const double* values, const double* pivots, dou
     double* own = y + k1;
     if (pivots)
       for (int k = 0; k < width; ++k)
-        if (pivots[k1 + k] < 0) own[k] = -own[k];
+        if (pivots[k1 + k] < 0)
+          for (int r = 0; r < nrhs; ++r) own[k + static_cast<size_t>(r) * n] = -own[k + static_cast<size_t>(r) * n];
     if (u > 0) {
-      std::vector<double> rowsBelow(u);
+      std::vector<double> rowsBelow(static_cast<size_t>(u) * nrhs);
       const int* rows = S.rows + S.rowStart[s] + width;
-      for (int i = 0; i < u; ++i) rowsBelow[i] = y[rows[i]];
-      dgemv_("T", &u, &width, &minusOne, block + width, &m, rowsBelow.data(), &one, &plusOne, own, &one);
+      for (int r = 0; r < nrhs; ++r)
+        for (int i = 0; i < u; ++i) rowsBelow[i + static_cast<size_t>(r) * u] = y[rows[i] + static_cast<size_t>(r) * n];
+      if (nrhs == 1)
+        dgemv_("T", &u, &width, &minusOne, block + width, &m, rowsBelow.data(), &one, &plusOne, own, &one);
+      else
+        dgemm_("T", "N", &width, &nrhs, &u, &minusOne, block + width, &m, rowsBelow.data(), &u, &plusOne, own, &n);
     }
-    dtrsv_("L", "T", "N", &width, block, &m, own, &one);
+    if (nrhs == 1)
+      dtrsv_("L", "T", "N", &width, block, &m, own, &one);
+    else
+      dtrsm_("L", "L", "T", "N", &width, &nrhs, &plusOne, block, &m, own, &n);
   });
 }
 

@@ -68,8 +68,9 @@ class MultifrontalCholesky {
   int factorize(const SparseMatrix& A, double* values, double* pivots = nullptr) const;
 
   // Solves P A P^T w = y in place (y: P b on entry, P x on exit) with the factor the last
-  // factorize() left in values, and S from the signs of its pivots (null: S = I).
-  void solve(const double* values, const double* pivots, double* y) const;
+  // factorize() left in values, and S from the signs of its pivots (null: S = I); for
+  // nrhs right-hand sides at once, y is n x nrhs, column-major.
+  void solve(const double* values, const double* pivots, double* y, int nrhs = 1) const;
 
   // Whether the factorization runs on the worker pool (false: every front on the calling thread).
   bool parallel() const { return threads_ > 1; }

@@ -331,28 +331,32 @@ TEST(MultFront, NamedMultipliersStayLastWhenTheyBecomeActive) {
 // n . u of a node to that of another, n = (0.6, 0.8)): nested dissection of the nodes, each
 // multiplier after the unknowns it ties, and no pivot needs pivoting, whether the
 // multipliers are inactive, active or penalised.
-TEST(MultFront, LargeContactSystemsAreOrderedByNodesWithTheMultipliersInside) {
-  const int m = 110, nodes = m * m, n = 2 * nodes, constraints = 40;
-  auto system = [&](bool active, double penalty) {
-    Triplets laplacian, t;
-    laplacian2d(m, laplacian);
-    const double block[2][2] = {{2.0, 1.0}, {1.0, 2.0}};
-    for (const auto& e : laplacian)
-      for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b) t.emplace_back(2 * e.row() + a, 2 * e.col() + b, e.value() * block[a][b]);
-    for (int c = 0; c < constraints; ++c) {
-      const int slave = 17 * c + 5, master = (nodes - 1) - 29 * c, row = n + c;
-      const double on = active ? 1.0 : 0.0;
-      for (auto [col, v] : {std::pair{2 * slave, 0.6}, std::pair{2 * slave + 1, 0.8}, std::pair{2 * master, -0.6},
-                            std::pair{2 * master + 1, -0.8}}) {
-        t.emplace_back(row, col, on * v);
-        t.emplace_back(col, row, on * v);
-      }
-      t.emplace_back(row, row, !active ? 1.0 : penalty > 0 ? -1.0 / penalty : 0.0);
+constexpr int kLargeNodes = 110 * 110, kLargeUnknowns = 2 * kLargeNodes, kLargeConstraints = 40;
+SparseMatrix largeContactSystem(bool active, double penalty) {
+  const int m = 110, nodes = kLargeNodes, n = kLargeUnknowns, constraints = kLargeConstraints;
+  Triplets laplacian, t;
+  laplacian2d(m, laplacian);
+  const double block[2][2] = {{2.0, 1.0}, {1.0, 2.0}};
+  for (const auto& e : laplacian)
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) t.emplace_back(2 * e.row() + a, 2 * e.col() + b, e.value() * block[a][b]);
+  for (int c = 0; c < constraints; ++c) {
+    const int slave = 17 * c + 5, master = (nodes - 1) - 29 * c, row = n + c;
+    const double on = active ? 1.0 : 0.0;
+    for (auto [col, v] : {std::pair{2 * slave, 0.6}, std::pair{2 * slave + 1, 0.8}, std::pair{2 * master, -0.6},
+                          std::pair{2 * master + 1, -0.8}}) {
+      t.emplace_back(row, col, on * v);
+      t.emplace_back(col, row, on * v);
     }
-    return fromTriplets(n + constraints, t);
-  };
-  const SparseMatrix inactive = system(false, 0.0), active = system(true, 0.0), penalised = system(true, 50.0);
+    t.emplace_back(row, row, !active ? 1.0 : penalty > 0 ? -1.0 / penalty : 0.0);
+  }
+  return fromTriplets(n + constraints, t);
+}
+
+TEST(MultFront, LargeContactSystemsAreOrderedByNodesWithTheMultipliersInside) {
+  const int n = kLargeUnknowns, constraints = kLargeConstraints;
+  const SparseMatrix inactive = largeContactSystem(false, 0.0), active = largeContactSystem(true, 0.0),
+                     penalised = largeContactSystem(true, 50.0);
   MultFrontSolver solver;
   solver.setMultipliersFrom(n);
   solver.analyze(inactive);
@@ -371,6 +375,32 @@ TEST(MultFront, LargeContactSystemsAreOrderedByNodesWithTheMultipliersInside) {
   once.setFactorizationsPerAnalysis(1);
   expectSolves(once, active, 1e-9);
   EXPECT_EQ(once.statistics().ordering, "CAMD (multipliers last)");
+}
+
+// Several right-hand sides at once (the factor read once, on the pool's threads) give what
+// one solve per column gives, with signed pivots too; so do the small systems, whose
+// factorization runs on one thread.
+TEST(MultFront, SolveManyGivesTheSolvesOfEachColumn) {
+  const SparseMatrix large = largeContactSystem(true, 0.0), small = saddlePoint(10, 5);
+  for (const SparseMatrix* A : {&large, &small}) {
+    MultFrontSolver solver;
+    if (A == &large) solver.setMultipliersFrom(kLargeUnknowns);
+    solver.analyze(*A);
+    solver.factorize(*A);
+    const Eigen::Index n = A->rows();
+    Eigen::MatrixXd known(n, 5), X;
+    for (int c = 0; c < 5; ++c) known.col(c) = knownSolution(static_cast<int>(n)).array() * (1.0 + c) + c;
+    const Eigen::MatrixXd B = *A * known;
+    solver.solveMany(B, X);
+    ASSERT_EQ(X.cols(), 5);
+    for (int c = 0; c < 5; ++c) {
+      Eigen::VectorXd x;
+      solver.solve(B.col(c), x);
+      EXPECT_LT((X.col(c) - x).norm() / x.norm(), 1e-12) << n << " " << c;
+      EXPECT_LT((X.col(c) - known.col(c)).norm() / known.col(c).norm(), 1e-9) << n << " " << c;
+    }
+    EXPECT_EQ(solver.handedOver(), "");
+  }
 }
 
 // Not named, an active multiplier may come before the unknowns it ties: a zero pivot,
