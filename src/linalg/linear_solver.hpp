@@ -75,7 +75,7 @@ class LinearSolver {
   void setFactorizationsPerAnalysis(int n) { factorizationsPerAnalysis_ = n; }
 
   // Unknowns first, first + 1, ... are Lagrange multipliers (contact): the factorizations
-  // without pivoting order them after the others, whatever their diagonal. -1: none.
+  // without pivoting order each after the unknowns it ties, whatever their diagonal. -1: none.
   void setMultipliersFrom(int first) { multipliersFrom_ = first; }
 
   // The caller vouches that every matrix it gives is exactly symmetric (MechanicalSystem::

@@ -1,7 +1,7 @@
 // MULT_FRONT, the default of SOLVEUR/METHODE (code_aster's name for its multifrontal
 // LDL^T without pivoting): aster-lite's multifrontal factorization with signed pivots
 // (CholmodSolver::Mode::MultFront, held in multFront_) for symmetric matrices, positive definite or stiffness +
-// Lagrange multipliers (contact, ordered last: setMultipliersFrom). UMFPACK, LU with
+// Lagrange multipliers (contact, each after the unknowns it ties: setMultipliersFrom). UMFPACK, LU with
 // pivoting, takes over for the rest of the run when a matrix is not symmetric (a follower
 // pressure) or meets a pivot that a factorization without pivoting cannot take (zero, or
 // more than NPREC digits lost); the hand-over is said once. A matrix UMFPACK finds singular

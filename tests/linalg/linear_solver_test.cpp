@@ -309,7 +309,8 @@ TEST(MultFront, SolvesASaddlePointWithoutPivoting) {
 }
 
 // The multipliers are identity rows when the pattern is analysed, and become constraints
-// later: named beforehand, they are ordered last and every factorization is signed.
+// later: named beforehand, they are ordered after the unknowns they tie and every
+// factorization is signed.
 TEST(MultFront, NamedMultipliersStayLastWhenTheyBecomeActive) {
   for (double penalty : {0.0, 50.0}) {
     MultFrontSolver solver;
