@@ -371,14 +371,17 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
     if (it.elastic) KelasticEliminated_ = Kelastic_;
     linalg::SparseMatrix& A = it.elastic ? KelasticEliminated_ : K_;
     linalg::eliminateFixedUnknowns(A, step.fixed);
+    for (int i = 0; i < n_; ++i)
+      if (step.fixed[i]) rhs(i) = dUc(i);
     factorized_ = Factorized::None;
-    factorize(A, false, it);
+    factorize(A, false, it, &rhs, &it.correction);
     factorized_ = it.elastic ? Factorized::Elastic : Factorized::Tangent;
     lastFixed_ = step.fixed;
+  } else {
+    for (int i = 0; i < n_; ++i)
+      if (step.fixed[i]) rhs(i) = dUc(i);
+    solver.solve(rhs, it.correction);
   }
-  for (int i = 0; i < n_; ++i)
-    if (step.fixed[i]) rhs(i) = dUc(i);
-  solver.solve(rhs, it.correction);
   if (terms_) solvedRhs_ = std::move(rhs);
   stats_.solveSeconds += seconds(solveStart);
   it.fixedKept = dUc.lpNorm<Eigen::Infinity>() == 0;
@@ -516,7 +519,9 @@ void StaticNonlinear::searchLine(Eigen::VectorXd& U, const Step& step, Iteration
   U = start + found.rho * dU;
 }
 
-void StaticNonlinear::factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it) {
+// With rhs, also solves A x = rhs into x (the factorization may take part of the solve).
+void StaticNonlinear::factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it,
+                                const Eigen::VectorXd* rhs, Eigen::VectorXd* x) {
   linalg::LinearSolver& solver = *solver_->solver;
   try {
     if (!analyzed_ || patternChanged) {
@@ -524,7 +529,10 @@ void StaticNonlinear::factorize(const linalg::SparseMatrix& A, bool patternChang
       solver.analyze(A);
       analyzed_ = true;
     }
-    solver.factorize(A);
+    if (rhs)
+      solver.factorizeAndSolve(A, *rhs, *x);
+    else
+      solver.factorize(A);
   } catch (const linalg::SingularMatrixError& e) {
     report(it, it.elastic ? "ELASTIQUE" : "TANGENTE");
     throwSingular(e);

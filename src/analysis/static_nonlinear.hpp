@@ -116,7 +116,8 @@ class StaticNonlinear {
   void solveWithRelations(Eigen::VectorXd& U, const Step& step, Iteration& it);
   void settleStatuses(Eigen::VectorXd& U, Step& step, Iteration& it);
   void searchLine(Eigen::VectorXd& U, const Step& step, Iteration& it);
-  void factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it);
+  void factorize(const linalg::SparseMatrix& A, bool patternChanged, const Iteration& it,
+                 const Eigen::VectorXd* rhs = nullptr, Eigen::VectorXd* x = nullptr);
   // The factorization held eliminated the same fixed unknowns and relations as the step's.
   bool sameConstraints(const Step& step) const;
   void report(const Iteration& it, const char* matrix) const;

@@ -290,7 +290,35 @@ void CholmodSolver::planMultifrontal(const SparseMatrix& A, const std::vector<in
                                                          indefinite);
 }
 
-void CholmodSolver::factorize(const SparseMatrix& A) {
+void CholmodSolver::factorize(const SparseMatrix& A) { factorizeWith(A, nullptr); }
+
+// The multifrontal factorization takes the forward substitution L z = P b with it.
+void CholmodSolver::factorizeAndSolve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  if (!multifrontal_) {
+    LinearSolver::factorizeAndSolve(A, b, x);
+    return;
+  }
+  const cholmod_factor* L = h_->factor;
+  const int* perm = static_cast<const int*>(L->Perm);
+  const int n = static_cast<int>(L->n);
+  if (b.size() != n) {
+    factorize(A);
+    solve(b, x);  // which names the wrong size
+    return;
+  }
+  std::vector<double> y(n);
+  for (int k = 0; k < n; ++k) y[k] = b[perm ? perm[k] : k];
+  factorizeWith(A, y.data());
+  ScopedSeconds t(stats_.solveSeconds, stats_.solveCount);
+  {
+    ScopedBlasThreads one(1);
+    multifrontal_->backward(static_cast<const double*>(L->x), negativePivots_ ? pivots_.data() : nullptr, y.data());
+  }
+  x.resize(n);
+  for (int k = 0; k < n; ++k) x[perm ? perm[k] : k] = y[k];
+}
+
+void CholmodSolver::factorizeWith(const SparseMatrix& A, double* forward) {
   ScopedSeconds t(stats_.factorizeSeconds, stats_.factorizeCount);
   SparseMatrix storage;
   const SparseMatrix& M = compressedMatrix(A, storage);
@@ -302,7 +330,7 @@ void CholmodSolver::factorize(const SparseMatrix& A) {
   const auto start = std::chrono::steady_clock::now();
   if (multifrontal_) {
     pivots_.resize(L->n);
-    const int failed = multifrontal_->factorize(M, static_cast<double*>(L->x), pivots_.data());
+    const int failed = multifrontal_->factorize(M, static_cast<double*>(L->x), pivots_.data(), forward);
     L->minor = failed < 0 ? L->n : static_cast<size_t>(failed);
     negativePivots_ = std::any_of(pivots_.begin(), pivots_.end(), [](double p) { return p < 0; });
   } else {

@@ -32,6 +32,7 @@ class CholmodSolver : public LinearSolver {
 
   void analyze(const SparseMatrix& A) override;
   void factorize(const SparseMatrix& A) override;
+  void factorizeAndSolve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const override;
   void solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const override;
   std::string name() const override {
@@ -51,6 +52,7 @@ class CholmodSolver : public LinearSolver {
   void auditFactor(const SparseMatrix& A) const;
   Mode mode_;
   double symmetryTolerance_ = 1e-10;
+  void factorizeWith(const SparseMatrix& A, double* forward);
   bool factorized_ = false;
   std::unique_ptr<Handles> h_;
   std::unique_ptr<SymmetryCheck> symmetry_;              // once analysed

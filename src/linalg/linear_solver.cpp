@@ -14,6 +14,11 @@ namespace aster::linalg {
 
 LinearSolver::~LinearSolver() = default;
 
+void LinearSolver::factorizeAndSolve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  factorize(A);
+  solve(b, x);
+}
+
 void LinearSolver::solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
   X.resize(B.rows(), B.cols());
   Eigen::VectorXd x;

@@ -52,6 +52,9 @@ class LinearSolver {
   // One solve per column of B. The multifrontal factor reads L once for all of them
   // (BLAS 3 instead of 2); the other solvers solve the columns one by one.
   virtual void solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const;
+  // factorize(A), then solve(b, x), as one call: MULT_FRONT takes each front's step of the
+  // forward substitution while the factorization has it in cache.
+  virtual void factorizeAndSolve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   virtual std::string name() const = 0;
 
   const LinearSolverStatistics& statistics() const { return stats_; }

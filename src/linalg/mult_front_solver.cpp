@@ -1,5 +1,7 @@
 #include "linalg/mult_front_solver.hpp"
 
+#include <functional>
+
 #include "core/messages.hpp"
 #include "linalg/umfpack_solver.hpp"
 
@@ -28,21 +30,34 @@ void MultFrontSolver::analyze(const SparseMatrix& A) {
   gatherStatistics();
 }
 
-void MultFrontSolver::factorize(const SparseMatrix& A) {
+// Runs `multFrontWork` while the multifrontal factorization holds; a matrix it cannot take
+// hands the run over to UMFPACK. True when it ran.
+bool MultFrontSolver::tryMultFront(const SparseMatrix& A, const std::function<void()>& multFrontWork) {
   active().setSingularityDigits(nprec_);
-  if (!umfpack_) {
-    try {
-      multFront_->factorize(A);
-      gatherStatistics();
-      return;
-    } catch (const UnsymmetricMatrixError&) {
-      handOver("the matrix is not symmetric", A);
-    } catch (const SingularMatrixError& e) {
-      const std::string what = e.what(), prefix = name() + ": ";
-      handOver("without pivoting, " + (what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what), A);
-    }
+  if (umfpack_) return false;
+  try {
+    multFrontWork();
+    gatherStatistics();
+    return true;
+  } catch (const UnsymmetricMatrixError&) {
+    handOver("the matrix is not symmetric", A);
+  } catch (const SingularMatrixError& e) {
+    const std::string what = e.what(), prefix = name() + ": ";
+    handOver("without pivoting, " + (what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what), A);
   }
+  return false;
+}
+
+void MultFrontSolver::factorize(const SparseMatrix& A) {
+  if (tryMultFront(A, [&] { multFront_->factorize(A); })) return;
   umfpack_->factorize(A);
+  gatherStatistics();
+}
+
+void MultFrontSolver::factorizeAndSolve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  if (tryMultFront(A, [&] { multFront_->factorizeAndSolve(A, b, x); })) return;
+  umfpack_->factorize(A);
+  umfpack_->solve(b, x);
   gatherStatistics();
 }
 

@@ -398,6 +398,8 @@ struct MultifrontalCholesky::Run {
   double* values;
   double* pivots;
   Updates updates;
+  double* forward;  // P b, turned into L^-1 P b front by front (null: no right-hand side)
+  Updates vectors;  // the forward substitution's update vectors
   std::atomic<int> failure{INT_MAX};
 };
 
@@ -408,7 +410,10 @@ void MultifrontalCholesky::factorizeFront(int s, Run& run) const {
   if (run.failure.load(std::memory_order_relaxed) < structure_.firstColumn[s]) return;
   const int parts = threads_ > 1 && flops_[s] >= kSliceFlops ? 2 * threads_ : 1;
   const int column = factorizeSupernode(s, run.a, run.values, run.pivots, run.updates, parts);
-  if (column < 0) return;
+  if (column < 0) {
+    if (run.forward) forwardFront(s, run.values, run.forward, 1, run.vectors);  // the front is in cache
+    return;
+  }
   int seen = run.failure.load();
   while (column < seen && !run.failure.compare_exchange_weak(seen, column)) {
   }
@@ -471,12 +476,14 @@ void MultifrontalCholesky::forEachFront(bool upward, const std::function<void(in
       blasCallersThatFit(threads_));
 }
 
-int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, double* pivots) const {
-  Run run{A.valuePtr(), values, pivots, Updates(structure_.supernodeCount)};
+int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, double* pivots, double* forward) const {
+  const int ns = structure_.supernodeCount;
+  Run run{A.valuePtr(), values, pivots, Updates(ns), forward, Updates(forward ? ns : 0)};
   if (threads_ < 2) {
-    for (int s = 0; s < structure_.supernodeCount; ++s) {
+    for (int s = 0; s < ns; ++s) {
       const int column = factorizeSupernode(s, run.a, values, pivots, run.updates, 1);
       if (column >= 0) return column;
+      if (forward) forwardFront(s, values, forward, 1, run.vectors);
     }
     return -1;
   }
@@ -496,45 +503,55 @@ int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, doubl
 // ancestors' results. With several right-hand sides the vectors are u x nrhs blocks and
 // each front's L is read once for all of them (dtrsm, dgemm).
 void MultifrontalCholesky::solve(const double* values, const double* pivots, double* y, int nrhs) const {
+  Updates vectors(structure_.supernodeCount);
+  forEachFront(true, [&](int s) { forwardFront(s, values, y, nrhs, vectors); });
+  backward(values, pivots, y, nrhs);
+}
+
+// Front s's step of L z = y: its columns of z, and its update vectors L21 z (u x nrhs)
+// for its parent, once its children's are added.
+void MultifrontalCholesky::forwardFront(int s, const double* values, double* y, int nrhs, Updates& vectors) const {
   const SupernodalStructure& S = structure_;
-  const int n = S.n;
-  Updates updates(S.supernodeCount);
-  const int one = 1;
-  const double plusOne = 1.0, minusOne = -1.0;
-  forEachFront(true, [&](int s) {
-    const int k1 = S.firstColumn[s], width = S.firstColumn[s + 1] - k1;
-    const int m = S.rowStart[s + 1] - S.rowStart[s], u = m - width;
-    const double* block = values + S.valueStart[s];
-    double* own = y + k1;
-    double* below = u > 0 ? new double[static_cast<size_t>(u) * nrhs]() : nullptr;
-    updates[s].reset(below);
-    for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
-      const int c = children_[e];
-      const int cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);
-      const int* relative = relative_.data() + relativeStart_[c];
-      const double* update = updates[c].get();
-      for (int r = 0; r < nrhs; ++r) {
-        double* ownR = own + static_cast<size_t>(r) * n;
-        double* belowR = below + static_cast<size_t>(r) * u;
-        const double* updateR = update + static_cast<size_t>(r) * cu;
-        for (int i = 0; i < cu; ++i) {
-          const int row = relative[i];
-          if (row < width)
-            ownR[row] -= updateR[i];
-          else
-            belowR[row - width] += updateR[i];
-        }
+  const int n = S.n, one = 1;
+  const double plusOne = 1.0;
+  const int k1 = S.firstColumn[s], width = S.firstColumn[s + 1] - k1;
+  const int m = S.rowStart[s + 1] - S.rowStart[s], u = m - width;
+  const double* block = values + S.valueStart[s];
+  double* own = y + k1;
+  double* below = u > 0 ? new double[static_cast<size_t>(u) * nrhs]() : nullptr;
+  vectors[s].reset(below);
+  for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
+    const int c = children_[e];
+    const int cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);
+    const int* relative = relative_.data() + relativeStart_[c];
+    const double* update = vectors[c].get();
+    for (int r = 0; r < nrhs; ++r) {
+      double* ownR = own + static_cast<size_t>(r) * n;
+      double* belowR = below + static_cast<size_t>(r) * u;
+      const double* updateR = update + static_cast<size_t>(r) * cu;
+      for (int i = 0; i < cu; ++i) {
+        const int row = relative[i];
+        if (row < width)
+          ownR[row] -= updateR[i];
+        else
+          belowR[row - width] += updateR[i];
       }
-      updates[c].reset();
     }
-    if (nrhs == 1) {
-      dtrsv_("L", "N", "N", &width, block, &m, own, &one);
-      if (u > 0) dgemv_("N", &u, &width, &plusOne, block + width, &m, own, &one, &plusOne, below, &one);
-    } else {
-      dtrsm_("L", "L", "N", "N", &width, &nrhs, &plusOne, block, &m, own, &n);
-      if (u > 0) dgemm_("N", "N", &u, &nrhs, &width, &plusOne, block + width, &m, own, &n, &plusOne, below, &u);
-    }
-  });
+    vectors[c].reset();
+  }
+  if (nrhs == 1) {
+    dtrsv_("L", "N", "N", &width, block, &m, own, &one);
+    if (u > 0) dgemv_("N", &u, &width, &plusOne, block + width, &m, own, &one, &plusOne, below, &one);
+  } else {
+    dtrsm_("L", "L", "N", "N", &width, &nrhs, &plusOne, block, &m, own, &n);
+    if (u > 0) dgemm_("N", "N", &u, &nrhs, &width, &plusOne, block + width, &m, own, &n, &plusOne, below, &u);
+  }
+}
+
+void MultifrontalCholesky::backward(const double* values, const double* pivots, double* y, int nrhs) const {
+  const SupernodalStructure& S = structure_;
+  const int n = S.n, one = 1;
+  const double plusOne = 1.0, minusOne = -1.0;
   forEachFront(false, [&](int s) {
     const int k1 = S.firstColumn[s], width = S.firstColumn[s + 1] - k1;
     const int m = S.rowStart[s + 1] - S.rowStart[s], u = m - width;

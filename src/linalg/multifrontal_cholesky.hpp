@@ -65,12 +65,17 @@ class MultifrontalCholesky {
   // and L(k,k) into pivots[k] (size n) when given, negated where S(k,k) = -1. Returns -1, or
   // the first column of P A P^T whose pivot was not positive (not finite and non-zero in an
   // indefinite front; L is then partial).
-  int factorize(const SparseMatrix& A, double* values, double* pivots = nullptr) const;
+  // With `forward` (P b, size n), each front also takes its step of L z = P b right after
+  // its factorization, while it is in cache: on success forward holds z, and backward()
+  // finishes the solve without reading L a first time.
+  int factorize(const SparseMatrix& A, double* values, double* pivots = nullptr, double* forward = nullptr) const;
 
   // Solves P A P^T w = y in place (y: P b on entry, P x on exit) with the factor the last
   // factorize() left in values, and S from the signs of its pivots (null: S = I); for
   // nrhs right-hand sides at once, y is n x nrhs, column-major.
   void solve(const double* values, const double* pivots, double* y, int nrhs = 1) const;
+  // The second half of solve(): z := S z, then L^T w = z (z: L^-1 P b on entry, P x on exit).
+  void backward(const double* values, const double* pivots, double* z, int nrhs = 1) const;
 
   // Whether the factorization runs on the worker pool (false: every front on the calling thread).
   bool parallel() const { return threads_ > 1; }
@@ -81,6 +86,7 @@ class MultifrontalCholesky {
   struct Run;
   static constexpr int kMaxDepth = 64;  // subtrees deeper than this run whole (a bound on the stack)
   void factorizeFront(int s, Run& run) const;
+  void forwardFront(int s, const double* values, double* y, int nrhs, Updates& vectors) const;
   void forEachFront(bool upward, const std::function<void(int)>& front) const;
   void walkUp(int s, const std::function<void(int)>& front, int depth) const;
   void walkDown(int s, const std::function<void(int)>& front, int depth) const;

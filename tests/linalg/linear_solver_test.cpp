@@ -404,6 +404,39 @@ TEST(MultFront, SolveManyGivesTheSolvesOfEachColumn) {
   }
 }
 
+// The forward substitution taken during the factorization gives what factorize() then
+// solve() give: large (on the pool's threads) and small, with signed pivots; and a matrix
+// MULT_FRONT cannot take is handed over to UMFPACK and still solved.
+TEST(MultFront, FactorizeAndSolveGivesWhatFactorizeThenSolveGive) {
+  const SparseMatrix large = largeContactSystem(true, 0.0), small = saddlePoint(10, 5);
+  for (const SparseMatrix* A : {&large, &small}) {
+    MultFrontSolver together, apart;
+    for (MultFrontSolver* s : {&together, &apart}) {
+      if (A == &large) s->setMultipliersFrom(kLargeUnknowns);
+      s->analyze(*A);
+    }
+    const Eigen::VectorXd known = knownSolution(static_cast<int>(A->rows())), b = *A * known;
+    Eigen::VectorXd x, y;
+    together.factorizeAndSolve(*A, b, x);
+    apart.factorize(*A);
+    apart.solve(b, y);
+    EXPECT_LT((x - y).norm() / y.norm(), 1e-13) << A->rows();
+    EXPECT_LT((x - known).norm() / known.norm(), 1e-9) << A->rows();
+    Eigen::VectorXd again;  // the factor is whole: a later solve gives the same
+    together.solve(b, again);
+    EXPECT_LT((again - x).norm() / x.norm(), 1e-13) << A->rows();
+    EXPECT_EQ(together.handedOver(), "");
+  }
+  MultFrontSolver solver;
+  const SparseMatrix unsymmetric = convectionDiffusion(5, 1.0);
+  const Eigen::VectorXd known = knownSolution(static_cast<int>(unsymmetric.rows())), b = unsymmetric * known;
+  solver.analyze(unsymmetric);
+  Eigen::VectorXd x;
+  solver.factorizeAndSolve(unsymmetric, b, x);
+  EXPECT_NE(solver.handedOver(), "");
+  EXPECT_LT((x - known).norm() / known.norm(), 1e-10);
+}
+
 // Not named, an active multiplier may come before the unknowns it ties: a zero pivot,
 // and UMFPACK takes over, once, with the same solution.
 TEST(MultFront, ZeroPivotHandsOverToUmfpack) {
