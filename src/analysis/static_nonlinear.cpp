@@ -356,6 +356,8 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
   const linalg::SparseMatrix& Kuse = it.elastic ? Kelastic_ : K_;
   Eigen::VectorXd rhs = -r_;
   if (dUc.lpNorm<Eigen::Infinity>() > 0) rhs -= Kuse * dUc;
+  for (int i = 0; i < n_; ++i)
+    if (step.fixed[i]) rhs(i) = dUc(i);
   it.refactored = it.assembleTangent || (it.elastic && factorized_ != Factorized::Elastic) ||
                   step.fixed != lastFixed_;
   if (it.refactored) {
@@ -371,15 +373,11 @@ void StaticNonlinear::factorAndSolve(Eigen::VectorXd& U, const Step& step, Itera
     if (it.elastic) KelasticEliminated_ = Kelastic_;
     linalg::SparseMatrix& A = it.elastic ? KelasticEliminated_ : K_;
     linalg::eliminateFixedUnknowns(A, step.fixed);
-    for (int i = 0; i < n_; ++i)
-      if (step.fixed[i]) rhs(i) = dUc(i);
     factorized_ = Factorized::None;
     factorize(A, false, it, &rhs, &it.correction);
     factorized_ = it.elastic ? Factorized::Elastic : Factorized::Tangent;
     lastFixed_ = step.fixed;
   } else {
-    for (int i = 0; i < n_; ++i)
-      if (step.fixed[i]) rhs(i) = dUc(i);
     solver.solve(rhs, it.correction);
   }
   if (terms_) solvedRhs_ = std::move(rhs);
