@@ -299,15 +299,13 @@ void CholmodSolver::factorizeAndSolve(const SparseMatrix& A, const Eigen::Vector
     return;
   }
   const cholmod_factor* L = h_->factor;
-  const int* perm = static_cast<const int*>(L->Perm);
   const int n = static_cast<int>(L->n);
   if (b.size() != n) {
     factorize(A);
     solve(b, x);  // which names the wrong size
     return;
   }
-  std::vector<double> y(n);
-  for (int k = 0; k < n; ++k) y[k] = b[perm ? perm[k] : k];
+  Eigen::MatrixXd y = toFactorOrder(b.data(), 1);
   factorizeWith(A, y.data());
   ScopedSeconds t(stats_.solveSeconds, stats_.solveCount);
   {
@@ -315,7 +313,25 @@ void CholmodSolver::factorizeAndSolve(const SparseMatrix& A, const Eigen::Vector
     multifrontal_->backward(static_cast<const double*>(L->x), negativePivots_ ? pivots_.data() : nullptr, y.data());
   }
   x.resize(n);
-  for (int k = 0; k < n; ++k) x[perm ? perm[k] : k] = y[k];
+  fromFactorOrder(y, x.data());
+}
+
+// The multifrontal solves work in the factor's order: P B for the k columns of B (n x k,
+// column-major), and back.
+Eigen::MatrixXd CholmodSolver::toFactorOrder(const double* B, Eigen::Index k) const {
+  const int* perm = static_cast<const int*>(h_->factor->Perm);
+  const Eigen::Index n = static_cast<Eigen::Index>(h_->factor->n);
+  Eigen::MatrixXd Y(n, k);
+  for (Eigen::Index c = 0; c < k; ++c)
+    for (Eigen::Index i = 0; i < n; ++i) Y(i, c) = B[(perm ? perm[i] : i) + c * n];
+  return Y;
+}
+
+void CholmodSolver::fromFactorOrder(const Eigen::MatrixXd& Y, double* X) const {
+  const int* perm = static_cast<const int*>(h_->factor->Perm);
+  const Eigen::Index n = Y.rows();
+  for (Eigen::Index c = 0; c < Y.cols(); ++c)
+    for (Eigen::Index i = 0; i < n; ++i) X[(perm ? perm[i] : i) + c * n] = Y(i, c);
 }
 
 void CholmodSolver::factorizeWith(const SparseMatrix& A, double* forward) {
@@ -407,14 +423,11 @@ void CholmodSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     ScopedBlasThreads one(1);
     if (multifrontal_) {
       // The factor is the multifrontal factorization's: solved front by front, on the pool.
-      const cholmod_factor* L = h_->factor;
-      const int* perm = static_cast<const int*>(L->Perm);
-      const int n = static_cast<int>(L->n);
-      std::vector<double> y(n);
-      for (int k = 0; k < n; ++k) y[k] = b[perm ? perm[k] : k];
-      multifrontal_->solve(static_cast<const double*>(L->x), negativePivots_ ? pivots_.data() : nullptr, y.data());
-      x.resize(n);
-      for (int k = 0; k < n; ++k) x[perm ? perm[k] : k] = y[k];
+      Eigen::MatrixXd y = toFactorOrder(b.data(), 1);
+      multifrontal_->solve(static_cast<const double*>(h_->factor->x), negativePivots_ ? pivots_.data() : nullptr,
+                           y.data());
+      x.resize(b.size());
+      fromFactorOrder(y, x.data());
       return;
     }
     if (!negativePivots_) {
@@ -447,17 +460,13 @@ void CholmodSolver::solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) cons
     return;
   }
   ScopedSeconds t(stats_.solveSeconds, stats_.solveCount);
-  if (B.cols() > 0) requireReadyToSolve(factorized_, B.col(0));
+  requireReadyToSolve(factorized_, B.col(0));  // B has at least two columns here
   ScopedBlasThreads one(1);
-  const cholmod_factor* L = h_->factor;
-  const int* perm = static_cast<const int*>(L->Perm);
-  const Eigen::Index n = static_cast<Eigen::Index>(L->n);
-  Eigen::MatrixXd Y(n, B.cols());
-  for (Eigen::Index k = 0; k < n; ++k) Y.row(k) = B.row(perm ? perm[k] : k);
-  multifrontal_->solve(static_cast<const double*>(L->x), negativePivots_ ? pivots_.data() : nullptr, Y.data(),
+  Eigen::MatrixXd Y = toFactorOrder(B.data(), B.cols());
+  multifrontal_->solve(static_cast<const double*>(h_->factor->x), negativePivots_ ? pivots_.data() : nullptr, Y.data(),
                        static_cast<int>(Y.cols()));
-  X.resize(n, B.cols());
-  for (Eigen::Index k = 0; k < n; ++k) X.row(perm ? perm[k] : k) = Y.row(k);
+  X.resize(B.rows(), B.cols());
+  fromFactorOrder(Y, X.data());
 }
 
 }  // namespace aster::linalg

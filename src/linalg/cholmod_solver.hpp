@@ -53,6 +53,8 @@ class CholmodSolver : public LinearSolver {
   Mode mode_;
   double symmetryTolerance_ = 1e-10;
   void factorizeWith(const SparseMatrix& A, double* forward);
+  Eigen::MatrixXd toFactorOrder(const double* B, Eigen::Index k) const;
+  void fromFactorOrder(const Eigen::MatrixXd& Y, double* X) const;
   bool factorized_ = false;
   std::unique_ptr<Handles> h_;
   std::unique_ptr<SymmetryCheck> symmetry_;              // once analysed
