@@ -115,16 +115,19 @@ bool LowRankUpdate::solve(const std::vector<AdditionalTerms::StatusChange>& chan
     }
     return out;
   };
-  // Every solve this call needs, at once.
+  // Every solve this call needs, at once; the symmetric changes' columns kept for below.
   std::vector<std::pair<int, Sparse>> needed;
-  for (const auto& c : changes) {
+  std::vector<Sparse> columns(changes.size());
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    const auto& c = changes[k];
     if (!decoupled(c.unknown)) needed.push_back({2 * c.unknown, {{c.unknown, 1.0}}});
     if (!c.symmetric) continue;
-    Sparse us = columnChange(c.unknown, freeRow(c));
-    if (!us.empty()) needed.push_back({2 * c.unknown + 1, std::move(us)});
+    columns[k] = columnChange(c.unknown, freeRow(c));
+    if (!columns[k].empty()) needed.push_back({2 * c.unknown + 1, columns[k]});
   }
   inverseTimes(needed);
-  for (const auto& c : changes) {
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    const auto& c = changes[k];
     const int i = c.unknown;
     const std::map<int, double> row = freeRow(c);
     double rhs = c.rhs;
@@ -145,7 +148,7 @@ bool LowRankUpdate::solve(const std::vector<AdditionalTerms::StatusChange>& chan
     V.push_back(kept(Sparse(v.begin(), v.end())));
     Z.push_back(ei);
     if (!c.symmetric) continue;
-    const Sparse us = columnChange(i, row);
+    const Sparse& us = columns[k];
     if (us.empty()) continue;
     Column col;
     col.kept = &kept_.at(2 * i + 1);
