@@ -372,7 +372,7 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
     for (int k = 0; k < width; ++k)
       pivots[k1 + k] = (sign.empty() ? 1.0 : sign[k]) * block[k + static_cast<size_t>(k) * m];
   if (u > 0) {
-    updates[s].reset(new double[static_cast<size_t>(u) * u]);  // written whole by dsyrk or dgemm
+    updates[s] = pool_.take(static_cast<size_t>(u) * u);  // written whole by dsyrk or dgemm
     if (!sign.empty()) {
       signedUpdate(u, width, block + width, m, sign.data(), updates[s].get());
     } else if (parts > 1) {
@@ -477,6 +477,12 @@ void MultifrontalCholesky::forEachFront(bool upward, const std::function<void(in
 }
 
 int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, double* pivots, double* forward) const {
+  const int failed = factorizeRun(A, values, pivots, forward);
+  pool_.endRun();  // every update matrix is back in the pool
+  return failed;
+}
+
+int MultifrontalCholesky::factorizeRun(const SparseMatrix& A, double* values, double* pivots, double* forward) const {
   const int ns = structure_.supernodeCount;
   Run run{A.valuePtr(), values, pivots, Updates(ns), forward, Updates(forward ? ns : 0)};
   if (threads_ < 2) {
@@ -519,7 +525,7 @@ void MultifrontalCholesky::forwardFront(int s, const double* values, double* y, 
   const double* block = values + S.valueStart[s];
   double* own = y + k1;
   double* below = u > 0 ? new double[static_cast<size_t>(u) * nrhs]() : nullptr;
-  vectors[s].reset(below);
+  vectors[s] = BlockPool::Block(below, BlockPool::Return{});
   for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
     const int c = children_[e];
     const int cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);

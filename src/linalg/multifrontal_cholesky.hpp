@@ -32,6 +32,7 @@
 #include <memory>
 #include <vector>
 
+#include "linalg/block_pool.hpp"
 #include "linalg/linear_solver.hpp"
 
 namespace aster::linalg {
@@ -82,9 +83,10 @@ class MultifrontalCholesky {
   double estimatedFlops() const { return totalFlops_; }
 
  private:
-  using Updates = std::vector<std::unique_ptr<double[]>>;  // per supernode, until its parent adds it
+  using Updates = std::vector<BlockPool::Block>;  // per supernode, until its parent adds it
   struct Run;
   static constexpr int kMaxDepth = 64;  // subtrees deeper than this run whole (a bound on the stack)
+  int factorizeRun(const SparseMatrix& A, double* values, double* pivots, double* forward) const;
   void factorizeFront(int s, Run& run) const;
   void forwardFront(int s, const double* values, double* y, int nrhs, Updates& vectors) const;
   void forEachFront(bool upward, const std::function<void(int)>& front) const;
@@ -115,6 +117,7 @@ class MultifrontalCholesky {
   std::vector<int> postorder_;         // the supernodes, each subtree a contiguous run
   std::vector<int> subtreeStart_;      // where s's subtree starts in postorder_
   std::vector<int> position_;          // where s is in postorder_
+  mutable BlockPool pool_;             // the large update matrices, from one factorization to the next
 };
 
 }  // namespace aster::linalg
