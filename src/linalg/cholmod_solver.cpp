@@ -11,9 +11,9 @@
 #include "core/worker_pool.hpp"
 #include "linalg/blas_info.hpp"
 #include "linalg/cholmod_views.hpp"
-#include "linalg/factor_memory.hpp"
 #include "linalg/pivot_audit.hpp"
 #include "linalg/stopwatch.hpp"
+#include "linalg/warmed_block.hpp"
 
 namespace aster::linalg {
 
@@ -33,6 +33,10 @@ struct CholmodSolver::Handles {
 namespace {
 
 constexpr Eigen::Index kNestedDissectionSize = 20000;
+// The factor's size guessed before the analysis, in entries per entry of the matrix:
+// about 5 for the nested dissection of 2D meshes (SVK square N = 256: 4.7, N = 512: 5.1),
+// more in 3D, where the guess falls short and the rest of the factor is touched later.
+constexpr size_t kFactorEntriesPerEntry = 5;
 constexpr int kFewFactorizations = 3;
 
 std::string cholmodStatus(int status) {
@@ -184,7 +188,13 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   const SparseMatrix& M = compressedMatrix(A, storage);
   factorized_ = false;
   multifrontal_.reset();
+  values_ = nullptr;
+  factorStorage_.reset();
   if (h_->factor) cholmod_free_factor(&h_->factor, &h_->common);
+  // The multifrontal factor of a large matrix: its memory touched while the ordering runs.
+  if (mode_ != Mode::LDLT && M.rows() >= kNestedDissectionSize && WorkerPool::shared().threads() > 1)
+    factorStorage_ = std::make_unique<WarmedBlock>(kFactorEntriesPerEntry * static_cast<size_t>(M.nonZeros()) *
+                                                   sizeof(double));
   pattern_.record(M);
   symmetry_ = std::make_unique<SymmetryCheck>(M, !symmetricByConstruction_);
   cholmod_sparse view = lowerView(M);
@@ -273,12 +283,14 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
 // factorization on CHOLMOD's structure.
 void CholmodSolver::planMultifrontal(const SparseMatrix& A, const std::vector<int>& constraintSet) {
   cholmod_factor* L = h_->factor;
-  cholmod_common& c = h_->common;
   if (!L->is_super) throw Error(name() + ": the analysis did not produce a supernodal factor");
-  if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, &c) || !L->x)
-    throw Error(name() + ": cannot allocate the factor: " + cholmodStatus(c.status));
-  adviseHugePages(L->x, L->xsize * sizeof(double));  // written whole at every factorization
   const SupernodalStructure structure = supernodalStructure(*L);
+  if (!factorStorage_) factorStorage_ = std::make_unique<WarmedBlock>(0);
+  try {
+    values_ = factorStorage_->take(static_cast<size_t>(structure.valueStart[structure.supernodeCount]) * sizeof(double));
+  } catch (const std::bad_alloc&) {
+    throw Error(name() + ": cannot allocate the factor: out of memory");
+  }
   const int threads = WorkerPool::shared().threads();
   std::vector<char> indefinite;  // the constraint columns, in the order of L
   if (std::find(constraintSet.begin(), constraintSet.end(), 1) != constraintSet.end()) {
@@ -310,7 +322,7 @@ void CholmodSolver::factorizeAndSolve(const SparseMatrix& A, const Eigen::Vector
   ScopedSeconds t(stats_.solveSeconds, stats_.solveCount);
   {
     ScopedBlasThreads one(1);
-    multifrontal_->backward(static_cast<const double*>(L->x), negativePivots_ ? pivots_.data() : nullptr, y.data());
+    multifrontal_->backward(values_, negativePivots_ ? pivots_.data() : nullptr, y.data());
   }
   x.resize(n);
   fromFactorOrder(y, x.data());
@@ -346,7 +358,7 @@ void CholmodSolver::factorizeWith(const SparseMatrix& A, double* forward) {
   const auto start = std::chrono::steady_clock::now();
   if (multifrontal_) {
     pivots_.resize(L->n);
-    const int failed = multifrontal_->factorize(M, static_cast<double*>(L->x), pivots_.data(), forward);
+    const int failed = multifrontal_->factorize(M, values_, pivots_.data(), forward);
     L->minor = failed < 0 ? L->n : static_cast<size_t>(failed);
     negativePivots_ = std::any_of(pivots_.begin(), pivots_.end(), [](double p) { return p < 0; });
   } else {
@@ -399,7 +411,7 @@ void CholmodSolver::auditFactor(const SparseMatrix& A) const {
     const int* p = static_cast<const int*>(L->p);
     for (size_t k = 0; k < L->n; ++k) diagonal[k] = x[p[k]];  // the diagonal comes first in each column
   }
-  const bool ll = L->is_ll;
+  const bool ll = multifrontal_ || L->is_ll;  // the multifrontal factor is L L^T (signed), its L symbolic
   auditPivots(name(), static_cast<int>(L->n), nprec_, [&](int k) {
     const int i = perm ? perm[k] : k;
     const double d = ll ? diagonal[k] * std::abs(diagonal[k]) : diagonal[k];  // L(k,k) S(k,k) L(k,k)
@@ -424,7 +436,7 @@ void CholmodSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     if (multifrontal_) {
       // The factor is the multifrontal factorization's: solved front by front, on the pool.
       Eigen::MatrixXd y = toFactorOrder(b.data(), 1);
-      multifrontal_->solve(static_cast<const double*>(h_->factor->x), negativePivots_ ? pivots_.data() : nullptr,
+      multifrontal_->solve(values_, negativePivots_ ? pivots_.data() : nullptr,
                            y.data());
       x.resize(b.size());
       fromFactorOrder(y, x.data());
@@ -463,7 +475,7 @@ void CholmodSolver::solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) cons
   requireReadyToSolve(factorized_, B.col(0));  // B has at least two columns here
   ScopedBlasThreads one(1);
   Eigen::MatrixXd Y = toFactorOrder(B.data(), B.cols());
-  multifrontal_->solve(static_cast<const double*>(h_->factor->x), negativePivots_ ? pivots_.data() : nullptr, Y.data(),
+  multifrontal_->solve(values_, negativePivots_ ? pivots_.data() : nullptr, Y.data(),
                        static_cast<int>(Y.cols()));
   X.resize(B.rows(), B.cols());
   fromFactorOrder(Y, X.data());

@@ -19,6 +19,7 @@
 
 #include "linalg/linear_solver.hpp"
 #include "linalg/multifrontal_cholesky.hpp"
+#include "linalg/warmed_block.hpp"
 
 namespace aster::linalg {
 
@@ -59,6 +60,8 @@ class CholmodSolver : public LinearSolver {
   std::unique_ptr<Handles> h_;
   std::unique_ptr<SymmetryCheck> symmetry_;              // once analysed
   std::unique_ptr<MultifrontalCholesky> multifrontal_;
+  std::unique_ptr<WarmedBlock> factorStorage_;           // the multifrontal factor's values
+  double* values_ = nullptr;                              // in factorStorage_
   std::vector<double> pivots_;  // L(k,k) from the multifrontal factorization, times S(k,k)
   bool negativePivots_ = false;  // S != I: solve() applies S between the triangular solves
 };

@@ -18,7 +18,8 @@
 // names the same column as on one thread.
 //
 // The symbolic structure (ordering, supernodes, row patterns, storage of L) is CHOLMOD's
-// supernodal analysis, so that cholmod_solve uses the factor as if CHOLMOD had computed it.
+// supernodal analysis; the values of L are laid out as CHOLMOD's supernodal factor would
+// hold them, in storage the caller owns.
 //
 // Signed columns (stiffness + Lagrange multipliers): P A P^T = L S L^T, S = diag(+-1), the
 // sign of each pivot taken as it comes, without pivoting. Fronts holding a column flagged
