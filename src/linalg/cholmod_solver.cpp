@@ -195,6 +195,13 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   if (mode_ != Mode::LDLT && M.rows() >= kNestedDissectionSize && WorkerPool::shared().threads() > 1)
     factorStorage_ = std::make_unique<WarmedBlock>(kFactorEntriesPerEntry * static_cast<size_t>(M.nonZeros()) *
                                                    sizeof(double));
+  struct StopWarming {  // an analysis that fails leaves no thread touching memory behind
+    std::unique_ptr<WarmedBlock>& storage;
+    bool done = false;
+    ~StopWarming() {
+      if (!done) storage.reset();
+    }
+  } stopWarming{factorStorage_};
   pattern_.record(M);
   symmetry_ = std::make_unique<SymmetryCheck>(M, !symmetricByConstruction_);
   cholmod_sparse view = lowerView(M);
@@ -277,6 +284,7 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   stats_.factorFlops = c.fl;  // predicted by the analysis
   stats_.factorNonzeros = static_cast<long long>(c.lnz);
   if (mode_ != Mode::LDLT) planMultifrontal(M, sets);
+  stopWarming.done = true;
 }
 
 // Gives the supernodal symbolic factor its numeric storage and plans the multifrontal
