@@ -1,7 +1,9 @@
 #include "linalg/warmed_block.hpp"
 
 #include <sys/mman.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <new>
 #include <system_error>
@@ -25,6 +27,11 @@ struct WarmedBlock::State {
 };
 
 WarmedBlock::WarmedBlock(std::size_t bytes) : state_(new State) {
+  // An estimate far above the factor (a matrix with little fill) must not take the memory
+  // other programs use: at most half of what is free now.
+  const long freePages = sysconf(_SC_AVPHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
+  if (freePages > 0 && pageSize > 0)
+    bytes = std::min(bytes, static_cast<std::size_t>(freePages) * static_cast<std::size_t>(pageSize) / 2);
   bytes = bytes / kHugePage * kHugePage;
   if (bytes == 0) return;
   void* block = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);

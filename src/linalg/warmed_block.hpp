@@ -21,7 +21,8 @@ namespace aster::linalg {
 
 class WarmedBlock {
  public:
-  explicit WarmedBlock(std::size_t bytes);  // starts touching `bytes` (rounded down to 2 MiB)
+  // Starts touching `bytes`, rounded down to 2 MiB, at most half of the memory free now.
+  explicit WarmedBlock(std::size_t bytes);
   ~WarmedBlock();
   WarmedBlock(const WarmedBlock&) = delete;
   WarmedBlock& operator=(const WarmedBlock&) = delete;
