@@ -1,7 +1,8 @@
 // Memory for the factor, touched ahead of need while the ordering runs.
 //
-// On the virtual machines this runs on, the first touch of a page the host has not backed
-// yet costs about 2 s per GiB (a fault in the guest and one in the host), and a process
+// On the virtual machines this runs on, the first touch of memory the host has not backed
+// yet costs about 2 s per GiB (1.9-2.4 s measured, 0.07 s for memory the process had just
+// given back), and a process
 // starting after some idle time gets such pages: the first factorization of the SVK
 // square at N = 256 took 0.95 s against 0.31 s for the others, most of the difference
 // touching its 464 MB factor. The ordering before it (METIS) runs on one thread for 1 s
@@ -10,11 +11,12 @@
 // a thread of its own; once the symbolic analysis knows the size, take() stops the
 // thread and fits the mapping to it, the pages touched kept (mremap), and the factor's
 // values live there. Pages given back to the system and mapped again did not do: warmed,
-// unmapped, then allocated by CHOLMOD, they saved 0.35 s of the 3 s at N = 512 (they did
-// not stay backed by the host; the guest's free page reporting would explain it).
+// unmapped, then allocated by CHOLMOD, they saved 0.35 s of the 3 s at N = 512 (the
+// guest's free page reporting to the host would explain it; not verified).
 //
-// With bytes = 0 (one thread, or a factor too small to gain) nothing is touched ahead:
-// take() maps the block, and its pages are touched where they are first written.
+// With bytes = 0 (the caller's choice: CholmodSolver warms only for 20 000 rows or more
+// and more than one thread) nothing is touched ahead: take() maps the block, and its
+// pages are touched where they are first written.
 #pragma once
 #include <cstddef>
 
