@@ -2,10 +2,9 @@
 //
 // On the virtual machines this runs on, the first touch of memory the host has not backed
 // yet costs about 2 s per GiB (1.9-2.4 s measured, 0.07 s for memory the process had just
-// given back), and a process
-// starting after some idle time gets such pages: the first factorization of the SVK
-// square at N = 256 took 0.95 s against 0.31 s for the others, most of the difference
-// touching its 464 MB factor. The ordering before it (METIS) runs on one thread for 1 s
+// given back), and a process starting after some idle time gets such memory: the first
+// factorization of the SVK square at N = 256 took 0.95 s against 0.31 s for the others,
+// most of the difference touching its 464 MB factor. The ordering before it (METIS) runs on one thread for 1 s
 // at N = 256 and 4 to 5 s at N = 512, leaving a core idle. A WarmedBlock maps an estimate
 // of the factor's size (transparent huge pages asked for) and touches it page by page on
 // a thread of its own; once the symbolic analysis knows the size, take() stops the
