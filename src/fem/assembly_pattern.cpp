@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/parallel_fill.hpp"
 
 namespace aster::fem {
 
@@ -37,7 +38,10 @@ AssemblyPattern::AssemblyPattern(int dofCount, const ElementDofs& elements)
   positionOffsets_.resize(ne + 1, 0);
   for (int e = 0; e < ne; ++e)
     positionOffsets_[e + 1] = positionOffsets_[e] + static_cast<std::int64_t>(elements.size(e)) * elements.size(e);
-  positions_.resize(positionOffsets_[ne]);
+  // Every position -1 first, filled on the pool's threads (the first touch of a large
+  // block): the entries of negative DOFs keep it, the others are written below.
+  positions_.reset(new int[static_cast<std::size_t>(positionOffsets_[ne])]);
+  parallelFill(positions_.get(), static_cast<std::size_t>(positionOffsets_[ne]), -1);
 
   // Two passes over the columns: the number of distinct rows of each (marker array), then,
   // in the matrix allocated at its final size, the sorted rows, to which each touching
@@ -62,6 +66,7 @@ AssemblyPattern::AssemblyPattern(int dofCount, const ElementDofs& elements)
   pattern_.resizeNonZeros(static_cast<Eigen::Index>(nonZeros_));
   int* outer = pattern_.outerIndexPtr();
   int* inner = pattern_.innerIndexPtr();
+  parallelFill(inner, static_cast<std::size_t>(nonZeros_), 0);  // touched on every thread, written below
   for (int j = 0; j <= dofCount; ++j) outer[j] = static_cast<int>(count[j]);
   std::fill(mark.begin(), mark.end(), -1);
   std::vector<int> positionOfRow(dofCount, -1);
@@ -74,18 +79,12 @@ AssemblyPattern::AssemblyPattern(int dofCount, const ElementDofs& elements)
     for (int t = start[j]; t < start[j + 1]; ++t) {
       const int e = touchElement[t], lj = touchLocal[t], n = elements.size(e);
       const int* d = elements.dofs(e);
-      int* pos = positions_.data() + positionOffsets_[e] + static_cast<std::int64_t>(lj) * n;
+      int* pos = positions_.get() + positionOffsets_[e] + static_cast<std::int64_t>(lj) * n;
       for (int i = 0; i < n; ++i) pos[i] = d[i] >= 0 ? positionOfRow[d[i]] : -1;
     }
   }
-  // Columns of negative DOFs are never reached: their entries stay unassembled.
-  for (int e = 0; e < ne; ++e) {
-    const int n = elements.size(e);
-    const int* d = elements.dofs(e);
-    for (int lj = 0; lj < n; ++lj)
-      if (d[lj] < 0) std::fill_n(positions_.data() + positionOffsets_[e] + static_cast<std::int64_t>(lj) * n, n, -1);
-  }
-  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + nonZeros_, 0.0);
+  // Columns of negative DOFs are never reached: their entries keep -1, unassembled.
+  parallelFill(pattern_.valuePtr(), static_cast<std::size_t>(nonZeros_), 0.0);
 }
 
 linalg::SparseMatrix AssemblyPattern::newMatrix() const {

@@ -7,6 +7,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -38,7 +39,7 @@ class AssemblyPattern {
 
   // Positions in the value array of element e's entries, column-major over the
   // local (n x n) matrix: entry (i, j) at [j*n + i]; -1 where not assembled.
-  const int* positions(int e) const { return positions_.data() + positionOffsets_[e]; }
+  const int* positions(int e) const { return positions_.get() + positionOffsets_[e]; }
 
   // A += Ke for element e; Ke is the local (n x n) matrix, column-major.
   void addMatrix(int e, const double* Ke, double* values) const {
@@ -82,7 +83,7 @@ class AssemblyPattern {
   bool taken_ = false;
   long long nonZeros_ = 0;
   std::vector<std::int64_t> positionOffsets_;
-  std::vector<int> positions_;
+  std::unique_ptr<int[]> positions_;  // -1: an entry of a negative DOF, never assembled
 };
 
 // Greedy colouring: elements of one colour share no DOF, so each colour can be
