@@ -188,7 +188,6 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   const SparseMatrix& M = compressedMatrix(A, storage);
   factorized_ = false;
   multifrontal_.reset();
-  values_ = nullptr;
   factorStorage_.reset();
   if (h_->factor) cholmod_free_factor(&h_->factor, &h_->common);
   // The multifrontal factor of a large matrix: its memory touched while the ordering runs.
@@ -295,7 +294,9 @@ void CholmodSolver::planMultifrontal(const SparseMatrix& A, const std::vector<in
   const SupernodalStructure structure = supernodalStructure(*L);
   if (!factorStorage_) factorStorage_ = std::make_unique<WarmedBlock>(0);
   try {
-    values_ = factorStorage_->take(static_cast<size_t>(structure.valueStart[structure.supernodeCount]) * sizeof(double));
+    // At least one entry: take() maps a block, and an empty matrix has none.
+    const size_t entries = std::max<size_t>(1, static_cast<size_t>(structure.valueStart[structure.supernodeCount]));
+    factorStorage_->take(entries * sizeof(double));
   } catch (const std::bad_alloc&) {
     throw Error(name() + ": cannot allocate the factor: out of memory");
   }
@@ -330,7 +331,7 @@ void CholmodSolver::factorizeAndSolve(const SparseMatrix& A, const Eigen::Vector
   ScopedSeconds t(stats_.solveSeconds, stats_.solveCount);
   {
     ScopedBlasThreads one(1);
-    multifrontal_->backward(values_, negativePivots_ ? pivots_.data() : nullptr, y.data());
+    multifrontal_->backward(values(), negativePivots_ ? pivots_.data() : nullptr, y.data());
   }
   x.resize(n);
   fromFactorOrder(y, x.data());
@@ -366,7 +367,7 @@ void CholmodSolver::factorizeWith(const SparseMatrix& A, double* forward) {
   const auto start = std::chrono::steady_clock::now();
   if (multifrontal_) {
     pivots_.resize(L->n);
-    const int failed = multifrontal_->factorize(M, values_, pivots_.data(), forward);
+    const int failed = multifrontal_->factorize(M, values(), pivots_.data(), forward);
     L->minor = failed < 0 ? L->n : static_cast<size_t>(failed);
     negativePivots_ = std::any_of(pivots_.begin(), pivots_.end(), [](double p) { return p < 0; });
   } else {
@@ -444,7 +445,7 @@ void CholmodSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     if (multifrontal_) {
       // The factor is the multifrontal factorization's: solved front by front, on the pool.
       Eigen::MatrixXd y = toFactorOrder(b.data(), 1);
-      multifrontal_->solve(values_, negativePivots_ ? pivots_.data() : nullptr,
+      multifrontal_->solve(values(), negativePivots_ ? pivots_.data() : nullptr,
                            y.data());
       x.resize(b.size());
       fromFactorOrder(y, x.data());
@@ -483,7 +484,7 @@ void CholmodSolver::solveMany(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) cons
   requireReadyToSolve(factorized_, B.col(0));  // B has at least two columns here
   ScopedBlasThreads one(1);
   Eigen::MatrixXd Y = toFactorOrder(B.data(), B.cols());
-  multifrontal_->solve(values_, negativePivots_ ? pivots_.data() : nullptr, Y.data(),
+  multifrontal_->solve(values(), negativePivots_ ? pivots_.data() : nullptr, Y.data(),
                        static_cast<int>(Y.cols()));
   X.resize(B.rows(), B.cols());
   fromFactorOrder(Y, X.data());

@@ -61,7 +61,7 @@ class CholmodSolver : public LinearSolver {
   std::unique_ptr<SymmetryCheck> symmetry_;              // once analysed
   std::unique_ptr<MultifrontalCholesky> multifrontal_;
   std::unique_ptr<WarmedBlock> factorStorage_;           // the multifrontal factor's values
-  double* values_ = nullptr;                              // in factorStorage_
+  double* values() const { return factorStorage_->data(); }  // with multifrontal_ only
   std::vector<double> pivots_;  // L(k,k) from the multifrontal factorization, times S(k,k)
   bool negativePivots_ = false;  // S != I: solve() applies S between the triangular solves
 };

@@ -24,6 +24,7 @@ struct WarmedBlock::State {
   std::atomic<bool> stop{false};
   std::atomic<std::size_t> touched{0};
   std::thread thread;
+  bool taken = false;
 };
 
 WarmedBlock::WarmedBlock(std::size_t bytes) : state_(new State) {
@@ -74,8 +75,11 @@ double* WarmedBlock::take(std::size_t bytes) {
     s.block = block;
   }
   s.bytes = bytes;
+  s.taken = true;
   return static_cast<double*>(s.block);
 }
+
+double* WarmedBlock::data() const { return state_->taken ? static_cast<double*>(state_->block) : nullptr; }
 
 std::size_t WarmedBlock::touchedBytes() const { return state_->touched.load(); }
 

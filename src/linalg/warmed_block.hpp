@@ -33,6 +33,7 @@ class WarmedBlock {
   // kept when it starts there. Once only. Throws std::bad_alloc when the system has no
   // memory for it.
   double* take(std::size_t bytes);
+  double* data() const;  // what take() returned; null before
   std::size_t touchedBytes() const;  // touched ahead so far
 
  private:

@@ -28,8 +28,10 @@ void waitUntilTouched(const WarmedBlock& block, std::size_t bytes) {
 
 TEST(WarmedBlock, WithoutWarmingTakeMapsAZeroedBlock) {
   WarmedBlock block(0);
+  EXPECT_EQ(block.data(), nullptr);
   double* values = block.take(3 * kMiB + 8);
   ASSERT_NE(values, nullptr);
+  EXPECT_EQ(block.data(), values);
   EXPECT_EQ(block.touchedBytes(), 0u);
   EXPECT_TRUE(zeroed(values, 3 * kMiB + 8));
   values[3 * kMiB / 8] = 1.5;  // writable to its last entry
