@@ -8,9 +8,16 @@
 #include <memory>
 #include <new>
 #include <numeric>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+namespace { struct Rec{int w,m; double t0,t1,t2,t3;}; struct Prof { std::vector<Rec> r; std::mutex mu; int calls=0;
+ ~Prof(){ FILE* f=std::fopen("/tmp/fronts.txt","w"); for(auto& x:r) std::fprintf(f,"%d %d %.9f %.9f %.9f\n",x.w,x.m,x.t1-x.t0,x.t2-x.t1,x.t3-x.t2); std::fclose(f);} } gProf;
+ double nowS(){ return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); } }
 
 #include "core/worker_pool.hpp"
 #include "linalg/blas_info.hpp"
+#include "linalg/small_front.hpp"
 
 extern "C" {
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
@@ -340,6 +347,7 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
   const int m = S.rowStart[s + 1] - S.rowStart[s];
   const int u = m - width;
   double* block = values + S.valueStart[s];
+  const double T0 = nowS();
   std::fill(block, block + static_cast<size_t>(m) * width, 0.0);
   for (long long e = entryStart_[s]; e < entryStart_[s + 1]; ++e) block[entryTarget_[e]] = a[entrySource_[e]];
   auto childUpdate = [&](int e, int& cu, const int*& relative) {
@@ -354,12 +362,15 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
     const double* update = childUpdate(e, cu, relative);
     addIntoBlock(update, cu, relative, blockColumns(relative, cu, width), block, m);
   }
+  const double T1 = nowS();
   int info = 0;
   std::vector<double> sign(signedFront_[s] ? width : 0);
   if (signedFront_[s]) {
     info = signedFrontFactor(width, m, block, sign.data());
   } else if (parts > 1) {
     info = parallelFrontCholesky(parts, width, m, block);  // the rows below too
+  } else if (width <= kSmallFrontWidth) {
+    info = smallFrontFactor(width, m, block);
   } else {
     dpotrf_("L", &width, block, &m, &info);
     if (info == 0 && u > 0) {
@@ -377,11 +388,16 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
       signedUpdate(u, width, block + width, m, sign.data(), updates[s].get());
     } else if (parts > 1) {
       parallelSyrk(parts, u, width, block + width, m, 0.0, updates[s].get(), u);
+    } else if (width <= kSmallFrontWidth) {
+      thread_local std::vector<double> workspace;
+      workspace.resize(std::max(workspace.size(), smallFrontWorkspace(u, width)));
+      smallFrontUpdate(u, width, block + width, m, updates[s].get(), workspace.data());
     } else {
       const double minusOne = -1.0, zero = 0.0;
       dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &zero, updates[s].get(), &u);
     }
   }
+  const double T2 = nowS();
   for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
     int cu = 0;
     const int* relative = nullptr;
@@ -389,6 +405,7 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
     addIntoUpdate(update, cu, relative, blockColumns(relative, cu, width), width, updates[s].get(), u);
     updates[children_[e]].reset();
   }
+  { const double T3 = nowS(); std::lock_guard<std::mutex> g(gProf.mu); if (gProf.r.size() < 3000000) gProf.r.push_back({width,m,T0,T1,T2,T3}); }
   return -1;
 }
 

@@ -1,0 +1,105 @@
+#include "linalg/small_front.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace aster::linalg {
+namespace {
+
+// The first `width` columns of an m x m symmetric positive definite matrix B = G G^T + m I
+// (G random in [-1, 1]), column-major with leading dimension m: a front before its
+// factorization. B is returned whole.
+std::vector<double> spdMatrix(int m, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  std::vector<double> G(static_cast<size_t>(m) * m), B(G.size());
+  for (double& g : G) g = entry(random);
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) {
+      double sum = i == j ? m : 0.0;
+      for (int k = 0; k < m; ++k) sum += G[i + static_cast<size_t>(k) * m] * G[j + static_cast<size_t>(k) * m];
+      B[i + static_cast<size_t>(j) * m] = sum;
+    }
+  return B;
+}
+
+struct Shape {
+  int width, m;
+};
+// Widths around the tiles (4 columns, 8 rows) and up to the largest front the kernels take.
+const Shape kShapes[] = {{1, 1},  {1, 9},   {2, 2},    {3, 12},   {4, 4},   {4, 13},   {5, 5},
+                         {5, 17}, {7, 30},  {8, 8},    {8, 16},   {9, 40},  {12, 20},  {16, 63},
+                         {17, 18}, {31, 70}, {33, 100}, {64, 237}, {100, 101}, {kSmallFrontWidth, 300}};
+
+// The factorized front reproduces the front: L11 L11^T = B11 and L21 L11^T = B21, to the
+// rounding of sums of `width` products of entries of size about sqrt(m). The entries above
+// L11's diagonal are not touched (the solves and CHOLMOD's storage expect them as given).
+TEST(SmallFront, FactorReproducesTheFront) {
+  const double mark = 7.25;
+  for (const Shape& s : kShapes) {
+    const int w = s.width, m = s.m;
+    const std::vector<double> B = spdMatrix(m, 7 + w + m);
+    std::vector<double> L(B.begin(), B.begin() + static_cast<size_t>(m) * w);
+    for (int j = 0; j < w; ++j)
+      for (int i = 0; i < j; ++i) L[i + static_cast<size_t>(j) * m] = mark;
+    ASSERT_EQ(smallFrontFactor(w, m, L.data()), 0) << w << " x " << m;
+    for (int j = 0; j < w; ++j)
+      for (int i = 0; i < j; ++i) ASSERT_EQ(L[i + static_cast<size_t>(j) * m], mark) << w << " x " << m;
+    double largest = 0.0, error = 0.0;
+    for (int j = 0; j < w; ++j)
+      for (int i = j; i < m; ++i) {
+        double sum = 0.0;  // (L L^T)(i, j), both factors from the lower trapezoid
+        for (int k = 0; k <= j; ++k) sum += L[i + static_cast<size_t>(k) * m] * L[j + static_cast<size_t>(k) * m];
+        const double b = B[i + static_cast<size_t>(j) * m];
+        largest = std::max(largest, std::abs(b));
+        error = std::max(error, std::abs(sum - b));
+      }
+    EXPECT_LE(error, 64 * std::numeric_limits<double>::epsilon() * largest) << w << " x " << m;
+    for (int j = 0; j < w; ++j) EXPECT_GT(L[j + static_cast<size_t>(j) * m], 0.0);
+  }
+}
+
+// The update matrix is -L21 L21^T on and below its diagonal, summed here directly.
+TEST(SmallFront, UpdateIsMinusL21L21Transposed) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  for (const Shape& s : kShapes) {
+    const int w = s.width, u = s.m - s.width, ld = s.m + 3;  // L21 inside a larger block
+    if (u == 0) continue;
+    std::vector<double> L21(static_cast<size_t>(ld) * w), U(static_cast<size_t>(u) * u, 0.0);
+    for (double& x : L21) x = entry(random);
+    std::vector<double> workspace(smallFrontWorkspace(u, w));
+    smallFrontUpdate(u, w, L21.data(), ld, U.data(), workspace.data());
+    double error = 0.0;
+    for (int j = 0; j < u; ++j)
+      for (int i = j; i < u; ++i) {
+        double sum = 0.0;
+        for (int k = 0; k < w; ++k) sum -= L21[i + static_cast<size_t>(k) * ld] * L21[j + static_cast<size_t>(k) * ld];
+        error = std::max(error, std::abs(U[i + static_cast<size_t>(j) * u] - sum));
+      }
+    EXPECT_LE(error, 4 * w * std::numeric_limits<double>::epsilon()) << w << " x " << u;
+  }
+}
+
+// A pivot that is not positive stops the factorization at its column, 1-based, as
+// LAPACK's dpotrf reports it: zero, negative, or NaN.
+TEST(SmallFront, NonPositivePivotNamesItsColumn) {
+  const int w = 9, m = 20;
+  for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    std::vector<double> B = spdMatrix(m, 11);
+    // Column 6 (0-based 5) made a copy of column 3 (0-based 2) over the front: B11 becomes
+    // singular at its sixth pivot, which is then zero up to rounding; set it exactly.
+    std::vector<double> L(B.begin(), B.begin() + static_cast<size_t>(m) * w);
+    for (int i = 0; i < m; ++i) L[i + 5 * static_cast<size_t>(m)] = 0.0;
+    for (int j = 0; j < w; ++j) L[5 + static_cast<size_t>(j) * m] = 0.0;
+    L[5 + 5 * static_cast<size_t>(m)] = bad;  // the sixth pivot is then exactly `bad`
+    EXPECT_EQ(smallFrontFactor(w, m, L.data()), 6) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace aster::linalg
