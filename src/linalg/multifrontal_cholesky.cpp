@@ -425,7 +425,8 @@ struct MultifrontalCholesky::Run {
 // smallest failing one, as a front's columns follow its descendants').
 void MultifrontalCholesky::factorizeFront(int s, Run& run) const {
   if (run.failure.load(std::memory_order_relaxed) < structure_.firstColumn[s]) return;
-  const int parts = threads_ > 1 && flops_[s] >= kSliceFlops ? 2 * threads_ : 1;
+  const int width = structure_.firstColumn[s + 1] - structure_.firstColumn[s];
+  const int parts = threads_ > 1 && flops_[s] >= kSliceFlops && width > kSmallFrontWidth ? 2 * threads_ : 1;
   const int column = factorizeSupernode(s, run.a, run.values, run.pivots, run.updates, parts);
   if (column < 0) {
     if (run.forward) forwardFront(s, run.values, run.forward, 1, run.vectors);  // the front is in cache
