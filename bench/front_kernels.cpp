@@ -1,9 +1,9 @@
 // Microseconds per front of the dense work of one front of the multifrontal factorization
 // (factor the m x width front, then its update matrix -L21 L21^T), on one thread, done by
-// the narrow fronts' kernels (linalg/small_front.hpp) and by the BLAS (dpotrf, dtrsm,
-// dsyrk, as the factorization calls them for wider fronts), for front shapes of the SVK
-// square's elimination tree. Best of 5 runs; the front is copied in before each repetition
-// in both (a memcpy of a few kB).
+// the BLAS (dpotrf, dtrsm, dsyrk, as the factorization calls them for wider fronts) and by
+// each build of the narrow fronts' kernels this CPU runs (linalg/small_front.hpp), for
+// front shapes of the SVK square's elimination tree. Best of 5 runs; the front is copied
+// in before each repetition (a memcpy of a few kB).
 //   bench_front_kernels [width m ...]
 #include <algorithm>
 #include <chrono>
@@ -15,14 +15,6 @@
 
 #include "linalg/blas_info.hpp"
 #include "linalg/small_front.hpp"
-
-extern "C" {
-void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
-void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
-            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
-void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
-            const int* lda, const double* beta, double* c, const int* ldc);
-}
 
 namespace {
 
@@ -66,10 +58,17 @@ int main(int argc, char** argv) {
   if (shapes.empty())  // widths and heights of the SVK square's fronts, N = 128 and 256
     shapes = {{2, 24}, {10, 43}, {16, 63}, {32, 143}, {64, 237}, {128, 414}, {128, 1000}, {192, 600}};
   const BlasInfo blas = blasInUse();
-  std::printf("BLAS: %s (core %s, 1 thread); narrow-front kernels: %s, widths up to %d\n", blas.library.c_str(),
-              blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(),
-              smallFrontKernels() ? "AVX2 + FMA" : "none (the BLAS)", kSmallFrontWidth);
-  std::printf("| width | m | flops | kernels us | GFLOP/s | BLAS us | GFLOP/s |\n|---|---|---|---|---|---|---|\n");
+  std::printf("BLAS: %s (core %s, 1 thread); the factorization uses the %s kernels up to %d columns\n",
+              blas.library.c_str(), blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(),
+              frontKernelsName(frontKernelsInUse()), kSmallFrontWidth);
+  std::vector<FrontKernels> kernels;
+  for (FrontKernels k : {FrontKernels::Blas, FrontKernels::Avx2, FrontKernels::Avx512})
+    if (frontKernelsRun(k)) kernels.push_back(k);
+  std::printf("| width | m | flops |");
+  for (FrontKernels k : kernels) std::printf(" %s us | GFLOP/s |", frontKernelsName(k));
+  std::printf("\n|---|---|---|");
+  for (size_t k = 0; k < kernels.size(); ++k) std::printf("---|---|");
+  std::printf("\n");
   for (const auto& [width, m] : shapes) {
     if (width < 1 || m < width) continue;
     const int u = m - width;
@@ -78,23 +77,16 @@ int main(int argc, char** argv) {
     std::vector<double> workspace(smallFrontWorkspace(u, width));
     const double w = width, flops = w * w * w / 3 + u * w * w + static_cast<double>(u) * u * w;
     const int reps = std::max(10, static_cast<int>(1e8 / flops));
-    const double kernels = microseconds(reps, [&] {
-      std::memcpy(block.data(), F.data(), F.size() * sizeof(double));
-      smallFrontFactor(width, m, block.data());
-      if (u > 0) smallFrontUpdate(u, width, block.data() + width, m, U.data(), workspace.data());
-    });
-    const double viaBlas = microseconds(reps, [&] {
-      std::memcpy(block.data(), F.data(), F.size() * sizeof(double));
-      int info = 0;
-      const double one = 1.0, minusOne = -1.0, zero = 0.0;
-      dpotrf_("L", &width, block.data(), &m, &info);
-      if (u > 0) {
-        dtrsm_("R", "L", "T", "N", &u, &width, &one, block.data(), &m, block.data() + width, &m);
-        dsyrk_("L", "N", &u, &width, &minusOne, block.data() + width, &m, &zero, U.data(), &u);
-      }
-    });
-    std::printf("| %d | %d | %.3g | %.2f | %.1f | %.2f | %.1f |\n", width, m, flops, kernels,
-                flops / kernels / 1e3, viaBlas, flops / viaBlas / 1e3);
+    std::printf("| %d | %d | %.3g |", width, m, flops);
+    for (FrontKernels k : kernels) {
+      const double us = microseconds(reps, [&] {
+        std::memcpy(block.data(), F.data(), F.size() * sizeof(double));
+        smallFrontFactor(width, m, block.data(), k);
+        if (u > 0) smallFrontUpdate(u, width, block.data() + width, m, U.data(), workspace.data(), k);
+      });
+      std::printf(" %.2f | %.1f |", us, flops / us / 1e3);
+    }
+    std::printf("\n");
   }
   return 0;
 }

@@ -1,6 +1,7 @@
 #include "linalg/small_front.hpp"
 
-#include "linalg/small_front_avx2.hpp"
+#include "core/error.hpp"
+#include "linalg/small_front_kernels.hpp"
 
 extern "C" {
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
@@ -12,18 +13,63 @@ void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, con
 
 namespace aster::linalg {
 
-bool smallFrontKernels() {
+bool frontKernelsRun(FrontKernels kernels) {
+  switch (kernels) {
+    case FrontKernels::Blas:
+      return true;
+    case FrontKernels::Avx2: {
 #ifdef ASTER_AVX2_FRONTS
-  static const bool cpuHasAvx2Fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return cpuHasAvx2Fma;
+      static const bool cpuHasAvx2Fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+      return cpuHasAvx2Fma;
 #else
-  return false;
+      return false;
 #endif
+    }
+    case FrontKernels::Avx512: {
+#ifdef ASTER_AVX512_FRONTS
+      // and the OS saves its registers (the check includes it); every such CPU has AVX2 and FMA
+      static const bool cpuHasAvx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx2") &&
+                                       __builtin_cpu_supports("fma");
+      return cpuHasAvx512;
+#else
+      return false;
+#endif
+    }
+  }
+  return false;
 }
 
-int smallFrontFactor(int width, int m, double* block) {
+FrontKernels frontKernelsInUse() {
+  static const FrontKernels best = frontKernelsRun(FrontKernels::Avx512) ? FrontKernels::Avx512
+                                   : frontKernelsRun(FrontKernels::Avx2) ? FrontKernels::Avx2
+                                                                         : FrontKernels::Blas;
+  return best;
+}
+
+const char* frontKernelsName(FrontKernels kernels) {
+  switch (kernels) {
+    case FrontKernels::Avx512: return "AVX-512";
+    case FrontKernels::Avx2: return "AVX2 + FMA";
+    case FrontKernels::Blas: break;
+  }
+  return "BLAS";
+}
+
+namespace {
+void requireRunnable(FrontKernels kernels) {
+  if (!frontKernelsRun(kernels))
+    throw Error(std::string("front kernels: this build or this CPU does not run the ") + frontKernelsName(kernels) +
+                " kernels");
+}
+}  // namespace
+
+int smallFrontFactor(int width, int m, double* block, FrontKernels kernels) {
+  requireRunnable(kernels);
+#ifdef ASTER_AVX512_FRONTS
+  if (kernels == FrontKernels::Avx512) return avx512::frontFactor(width, m, block);
+#endif
 #ifdef ASTER_AVX2_FRONTS
-  if (smallFrontKernels()) return avx2::frontFactor(width, m, block);
+  if (kernels == FrontKernels::Avx2) return avx2::frontFactor(width, m, block);
 #endif
   int info = 0;
   dpotrf_("L", &width, block, &m, &info);
@@ -35,9 +81,14 @@ int smallFrontFactor(int width, int m, double* block) {
   return info;
 }
 
-void smallFrontUpdate(int u, int width, const double* L21, int ld, double* U, double* workspace) {
+void smallFrontUpdate(int u, int width, const double* L21, int ld, double* U, double* workspace,
+                      FrontKernels kernels) {
+  requireRunnable(kernels);
+#ifdef ASTER_AVX512_FRONTS
+  if (kernels == FrontKernels::Avx512) return avx512::frontUpdate(u, width, L21, ld, U, workspace);
+#endif
 #ifdef ASTER_AVX2_FRONTS
-  if (smallFrontKernels()) return avx2::frontUpdate(u, width, L21, ld, U, workspace);
+  if (kernels == FrontKernels::Avx2) return avx2::frontUpdate(u, width, L21, ld, U, workspace);
 #endif
   (void)workspace;
   const double minusOne = -1.0, zero = 0.0;
@@ -45,7 +96,7 @@ void smallFrontUpdate(int u, int width, const double* L21, int ld, double* U, do
 }
 
 std::size_t smallFrontWorkspace(int u, int width) {
-  return static_cast<std::size_t>(avx2::packedRows(u)) * static_cast<std::size_t>(width);
+  return static_cast<std::size_t>(packedRows(u)) * static_cast<std::size_t>(width);
 }
 
 }  // namespace aster::linalg

@@ -5,7 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
+
+#include "core/error.hpp"
 
 namespace aster::linalg {
 namespace {
@@ -27,6 +30,14 @@ std::vector<double> spdMatrix(int m, unsigned seed) {
   return B;
 }
 
+// Every build of the kernels this CPU runs, the BLAS included.
+std::vector<FrontKernels> runnableKernels() {
+  std::vector<FrontKernels> kernels;
+  for (FrontKernels k : {FrontKernels::Blas, FrontKernels::Avx2, FrontKernels::Avx512})
+    if (frontKernelsRun(k)) kernels.push_back(k);
+  return kernels;
+}
+
 struct Shape {
   int width, m;
 };
@@ -40,15 +51,17 @@ const Shape kShapes[] = {{1, 1},  {1, 9},   {2, 2},    {3, 12},   {4, 4},   {4, 
 // L11's diagonal are not touched (the solves and CHOLMOD's storage expect them as given).
 TEST(SmallFront, FactorReproducesTheFront) {
   const double mark = 7.25;
+  for (const FrontKernels kernels : runnableKernels())
   for (const Shape& s : kShapes) {
     const int w = s.width, m = s.m;
     const std::vector<double> B = spdMatrix(m, 7 + w + m);
     std::vector<double> L(B.begin(), B.begin() + static_cast<size_t>(m) * w);
     for (int j = 0; j < w; ++j)
       for (int i = 0; i < j; ++i) L[i + static_cast<size_t>(j) * m] = mark;
-    ASSERT_EQ(smallFrontFactor(w, m, L.data()), 0) << w << " x " << m;
+    SCOPED_TRACE(std::string(frontKernelsName(kernels)) + ", " + std::to_string(w) + " x " + std::to_string(m));
+    ASSERT_EQ(smallFrontFactor(w, m, L.data(), kernels), 0);
     for (int j = 0; j < w; ++j)
-      for (int i = 0; i < j; ++i) ASSERT_EQ(L[i + static_cast<size_t>(j) * m], mark) << w << " x " << m;
+      for (int i = 0; i < j; ++i) ASSERT_EQ(L[i + static_cast<size_t>(j) * m], mark);
     double largest = 0.0, error = 0.0;
     for (int j = 0; j < w; ++j)
       for (int i = j; i < m; ++i) {
@@ -58,7 +71,7 @@ TEST(SmallFront, FactorReproducesTheFront) {
         largest = std::max(largest, std::abs(b));
         error = std::max(error, std::abs(sum - b));
       }
-    EXPECT_LE(error, 64 * std::numeric_limits<double>::epsilon() * largest) << w << " x " << m;
+    EXPECT_LE(error, 64 * std::numeric_limits<double>::epsilon() * largest);
     for (int j = 0; j < w; ++j) EXPECT_GT(L[j + static_cast<size_t>(j) * m], 0.0);
   }
 }
@@ -67,13 +80,14 @@ TEST(SmallFront, FactorReproducesTheFront) {
 TEST(SmallFront, UpdateIsMinusL21L21Transposed) {
   std::mt19937 random(3);
   std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  for (const FrontKernels kernels : runnableKernels())
   for (const Shape& s : kShapes) {
     const int w = s.width, u = s.m - s.width, ld = s.m + 3;  // L21 inside a larger block
     if (u == 0) continue;
     std::vector<double> L21(static_cast<size_t>(ld) * w), U(static_cast<size_t>(u) * u, 0.0);
     for (double& x : L21) x = entry(random);
     std::vector<double> workspace(smallFrontWorkspace(u, w));
-    smallFrontUpdate(u, w, L21.data(), ld, U.data(), workspace.data());
+    smallFrontUpdate(u, w, L21.data(), ld, U.data(), workspace.data(), kernels);
     double error = 0.0;
     for (int j = 0; j < u; ++j)
       for (int i = j; i < u; ++i) {
@@ -81,15 +95,18 @@ TEST(SmallFront, UpdateIsMinusL21L21Transposed) {
         for (int k = 0; k < w; ++k) sum -= L21[i + static_cast<size_t>(k) * ld] * L21[j + static_cast<size_t>(k) * ld];
         error = std::max(error, std::abs(U[i + static_cast<size_t>(j) * u] - sum));
       }
-    EXPECT_LE(error, 4 * w * std::numeric_limits<double>::epsilon()) << w << " x " << u;
+    EXPECT_LE(error, 4 * w * std::numeric_limits<double>::epsilon()) << frontKernelsName(kernels) << ", " << w << " x " << u;
   }
 }
 
 // A pivot that is not positive stops the factorization at its column, 1-based, as
-// LAPACK's dpotrf reports it: zero, negative, or NaN.
+// LAPACK's dpotrf reports it: zero, negative, or NaN (which OpenBLAS's dpotrf lets
+// through: the BLAS path is not asked for it).
 TEST(SmallFront, NonPositivePivotNamesItsColumn) {
   const int w = 9, m = 20;
+  for (const FrontKernels kernels : runnableKernels())
   for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    if (std::isnan(bad) && kernels == FrontKernels::Blas) continue;
     std::vector<double> B = spdMatrix(m, 11);
     // Column 6 (0-based 5) made a copy of column 3 (0-based 2) over the front: B11 becomes
     // singular at its sixth pivot, which is then zero up to rounding; set it exactly.
@@ -97,8 +114,40 @@ TEST(SmallFront, NonPositivePivotNamesItsColumn) {
     for (int i = 0; i < m; ++i) L[i + 5 * static_cast<size_t>(m)] = 0.0;
     for (int j = 0; j < w; ++j) L[5 + static_cast<size_t>(j) * m] = 0.0;
     L[5 + 5 * static_cast<size_t>(m)] = bad;  // the sixth pivot is then exactly `bad`
-    EXPECT_EQ(smallFrontFactor(w, m, L.data()), 6) << bad;
+    EXPECT_EQ(smallFrontFactor(w, m, L.data(), kernels), 6) << frontKernelsName(kernels) << ", pivot " << bad;
   }
+}
+
+// The AVX2 and AVX-512 builds give the same bits, so that results do not depend on which
+// of the two a CPU runs (each entry is the same sequence of fused multiply-adds).
+TEST(SmallFront, Avx2AndAvx512GiveTheSameBits) {
+  if (!frontKernelsRun(FrontKernels::Avx2) || !frontKernelsRun(FrontKernels::Avx512))
+    GTEST_SKIP() << "this build or CPU runs only one of them";
+  for (const Shape& s : kShapes) {
+    const int w = s.width, m = s.m, u = m - w;
+    const std::vector<double> B = spdMatrix(m, 5 + w + m);
+    std::vector<double> L2(B.begin(), B.begin() + static_cast<size_t>(m) * w), L512 = L2;
+    ASSERT_EQ(smallFrontFactor(w, m, L2.data(), FrontKernels::Avx2), 0);
+    ASSERT_EQ(smallFrontFactor(w, m, L512.data(), FrontKernels::Avx512), 0);
+    EXPECT_EQ(L2, L512) << w << " x " << m;
+    if (u == 0) continue;
+    std::vector<double> U2(static_cast<size_t>(u) * u, 0.0), U512 = U2, workspace(smallFrontWorkspace(u, w));
+    smallFrontUpdate(u, w, L2.data() + w, m, U2.data(), workspace.data(), FrontKernels::Avx2);
+    smallFrontUpdate(u, w, L2.data() + w, m, U512.data(), workspace.data(), FrontKernels::Avx512);
+    for (int j = 0; j < u; ++j)
+      for (int i = j; i < u; ++i)
+        ASSERT_EQ(U2[i + static_cast<size_t>(j) * u], U512[i + static_cast<size_t>(j) * u]) << w << " x " << m;
+  }
+}
+
+// A build this CPU does not run is refused by name, never run.
+TEST(SmallFront, KernelsThisCpuDoesNotRunAreRefused) {
+  for (const FrontKernels kernels : {FrontKernels::Avx2, FrontKernels::Avx512}) {
+    if (frontKernelsRun(kernels)) continue;
+    double pivot = 4.0;
+    EXPECT_THROW(smallFrontFactor(1, 1, &pivot, kernels), Error) << frontKernelsName(kernels);
+  }
+  EXPECT_TRUE(frontKernelsRun(frontKernelsInUse()));
 }
 
 }  // namespace
