@@ -4,7 +4,7 @@
 // AVX2 + FMA, the build chosen at run time. The functions have internal linkage
 // (an anonymous namespace) so that the linker never merges the two builds, and
 // the AVX2 entry points are flattened so that no inline function of Eigen, of
-// fem/ or of the law is emitted from AVX2 code (tests/avx2_symbols.cmake
+// fem/ or of the law is emitted from AVX2 code (tests/simd_symbols.cmake
 // checks).
 #pragma once
 #include <cmath>
