@@ -1,7 +1,7 @@
 // Microseconds per front of the dense work of one front of the multifrontal factorization
 // (factor the m x width front, then its update matrix -L21 L21^T), on one thread, done by
 // the BLAS (dpotrf, dtrsm, dsyrk, as the factorization calls them for wider fronts) and by
-// each build of the narrow fronts' kernels this CPU runs (linalg/small_front.hpp), for
+// each build of the fronts' kernels this CPU runs (linalg/dense_front.hpp), for
 // front shapes of the SVK square's elimination tree. Best of 5 runs; the front is copied
 // in before each repetition (a memcpy of a few kB).
 //   bench_front_kernels [width m ...]
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "linalg/blas_info.hpp"
-#include "linalg/small_front.hpp"
+#include "linalg/dense_front.hpp"
 
 namespace {
 
@@ -56,11 +56,11 @@ int main(int argc, char** argv) {
   std::vector<std::pair<int, int>> shapes;
   for (int i = 1; i + 1 < argc; i += 2) shapes.push_back({std::atoi(argv[i]), std::atoi(argv[i + 1])});
   if (shapes.empty())  // widths and heights of the SVK square's fronts, N = 128 and 256
-    shapes = {{2, 24}, {10, 43}, {16, 63}, {32, 143}, {64, 237}, {128, 414}, {128, 1000}, {192, 600}};
+    shapes = {{2, 24},    {10, 43},   {16, 63},    {32, 143},   {64, 237},
+              {128, 414}, {128, 1000}, {192, 600}, {512, 1500}, {1500, 3000}};
   const BlasInfo blas = blasInUse();
-  std::printf("BLAS: %s (core %s, 1 thread); the factorization uses the %s kernels up to %d columns\n",
-              blas.library.c_str(), blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(),
-              frontKernelsName(frontKernelsInUse()), kSmallFrontWidth);
+  std::printf("BLAS: %s (core %s, 1 thread); the factorization uses the %s kernels\n", blas.library.c_str(),
+              blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(), frontKernelsName(frontKernelsInUse()));
   std::vector<FrontKernels> kernels;
   for (FrontKernels k : {FrontKernels::Blas, FrontKernels::Avx2, FrontKernels::Avx512})
     if (frontKernelsRun(k)) kernels.push_back(k);
@@ -74,15 +74,15 @@ int main(int argc, char** argv) {
     const int u = m - width;
     const std::vector<double> F = front(width, m);
     std::vector<double> block(F.size()), U(std::max<size_t>(1, static_cast<size_t>(u) * u));
-    std::vector<double> workspace(smallFrontWorkspace(u, width));
+    std::vector<double> workspace(frontWorkspace(m));
     const double w = width, flops = w * w * w / 3 + u * w * w + static_cast<double>(u) * u * w;
     const int reps = std::max(10, static_cast<int>(1e8 / flops));
     std::printf("| %d | %d | %.3g |", width, m, flops);
     for (FrontKernels k : kernels) {
       const double us = microseconds(reps, [&] {
         std::memcpy(block.data(), F.data(), F.size() * sizeof(double));
-        smallFrontFactor(width, m, block.data(), k);
-        if (u > 0) smallFrontUpdate(u, width, block.data() + width, m, U.data(), workspace.data(), k);
+        factorFront(width, m, block.data(), workspace.data(), k);
+        if (u > 0) updateMatrix(u, width, block.data() + width, m, U.data(), workspace.data(), k);
       });
       std::printf(" %.2f | %.1f |", us, flops / us / 1e3);
     }

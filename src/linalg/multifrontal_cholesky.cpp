@@ -17,7 +17,7 @@ namespace { struct Rec{int w,m; double t0,t1,t2,t3;}; struct Prof { std::vector<
 
 #include "core/worker_pool.hpp"
 #include "linalg/blas_info.hpp"
-#include "linalg/small_front.hpp"
+#include "linalg/dense_front.hpp"
 
 extern "C" {
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
@@ -137,6 +137,65 @@ int parallelFrontCholesky(int parts, int width, int m, double* block) {
     }
   }
   return 0;
+}
+
+// Per-thread workspace of the dense front kernels for fronts of `rows` rows.
+double* frontWorkspaceFor(int rows) {
+  thread_local std::vector<double> workspace;
+  const size_t size = frontWorkspace(rows);
+  if (workspace.size() < size) workspace.resize(size);
+  return workspace.data();
+}
+
+// Boundaries of `parts` slices of the columns [0, n) of a lower trapezoid of `rows` rows
+// (column j holds rows - j entries) that hold about the same number of entries.
+std::vector<int> balancedColumns(int parts, int rows, int n) {
+  std::vector<int> first(parts + 1, n);
+  first[0] = 0;
+  const double total = n * (rows - 0.5 * (n - 1.0));
+  double work = 0;
+  for (int j = 0, p = 1; j < n && p < parts; ++j) {
+    work += rows - j;
+    if (work >= total * p / parts) first[p++] = j + 1;
+  }
+  return first;
+}
+
+// The front factorized by the dense front kernels in `parts` pieces the pool's threads
+// claim, panel by panel: its diagonal block on one thread, then the rows below it in
+// slices, then its products with the front's next columns in slices of those columns.
+int parallelFrontKernels(int parts, int width, int m, double* block, FrontKernels kernels) {
+  for (int p0 = 0; p0 < width; p0 += kFrontPanel) {
+    const int b = std::min(kFrontPanel, width - p0);
+    double* panel = block + p0 + static_cast<size_t>(p0) * m;
+    const int info = factorDiagonalBlock(b, m, panel, kernels);
+    if (info != 0) return p0 + info;
+    const int below = m - p0 - b, trailing = width - p0 - b;
+    if (below > 0)
+      inParallel(parts, [&](int p) {
+        const int r0 = slice(below, parts, p), r = slice(below, parts, p + 1) - r0;
+        if (r > 0) solveRowsBelow(b, m, panel, r, panel + b + r0, kernels);
+      });
+    if (trailing > 0) {
+      const std::vector<int> first = balancedColumns(parts, below, trailing);
+      inParallel(parts, [&](int p) {
+        if (first[p] < first[p + 1])
+          subtractLowerProducts(below, first[p], first[p + 1], b, panel + b, m, panel + b + static_cast<size_t>(b) * m,
+                                m, frontWorkspaceFor(below - first[p]), false, kernels);
+      });
+    }
+  }
+  return 0;
+}
+
+// U := -L21 L21^T (u x u) by the dense front kernels in `parts` slices of its columns.
+void parallelUpdateKernels(int parts, int u, int width, const double* L21, int ld, double* U, FrontKernels kernels) {
+  const std::vector<int> first = balancedColumns(parts, u, u);
+  inParallel(parts, [&](int p) {
+    if (first[p] < first[p + 1])
+      subtractLowerProducts(u, first[p], first[p + 1], width, L21, ld, U, u, frontWorkspaceFor(u - first[p]), true,
+                            kernels);
+  });
 }
 
 // A front of signed columns: its `width` pivot columns of the m x width block are
@@ -367,10 +426,11 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
   std::vector<double> sign(signedFront_[s] ? width : 0);
   if (signedFront_[s]) {
     info = signedFrontFactor(width, m, block, sign.data());
+  } else if (kernels_ != FrontKernels::Blas) {
+    info = parts > 1 ? parallelFrontKernels(parts, width, m, block, kernels_)
+                     : factorFront(width, m, block, frontWorkspaceFor(m), kernels_);
   } else if (parts > 1) {
     info = parallelFrontCholesky(parts, width, m, block);  // the rows below too
-  } else if (width <= kSmallFrontWidth) {
-    info = smallFrontFactor(width, m, block);
   } else {
     dpotrf_("L", &width, block, &m, &info);
     if (info == 0 && u > 0) {
@@ -386,12 +446,13 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
     updates[s] = pool_.take(static_cast<size_t>(u) * u);  // written whole by dsyrk or dgemm
     if (!sign.empty()) {
       signedUpdate(u, width, block + width, m, sign.data(), updates[s].get());
+    } else if (kernels_ != FrontKernels::Blas) {
+      if (parts > 1)
+        parallelUpdateKernels(parts, u, width, block + width, m, updates[s].get(), kernels_);
+      else
+        updateMatrix(u, width, block + width, m, updates[s].get(), frontWorkspaceFor(u), kernels_);
     } else if (parts > 1) {
       parallelSyrk(parts, u, width, block + width, m, 0.0, updates[s].get(), u);
-    } else if (width <= kSmallFrontWidth) {
-      thread_local std::vector<double> workspace;
-      workspace.resize(std::max(workspace.size(), smallFrontWorkspace(u, width)));
-      smallFrontUpdate(u, width, block + width, m, updates[s].get(), workspace.data());
     } else {
       const double minusOne = -1.0, zero = 0.0;
       dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &zero, updates[s].get(), &u);
@@ -425,8 +486,7 @@ struct MultifrontalCholesky::Run {
 // smallest failing one, as a front's columns follow its descendants').
 void MultifrontalCholesky::factorizeFront(int s, Run& run) const {
   if (run.failure.load(std::memory_order_relaxed) < structure_.firstColumn[s]) return;
-  const int width = structure_.firstColumn[s + 1] - structure_.firstColumn[s];
-  const int parts = threads_ > 1 && flops_[s] >= kSliceFlops && width > kSmallFrontWidth ? 2 * threads_ : 1;
+  const int parts = threads_ > 1 && flops_[s] >= kSliceFlops ? 2 * threads_ : 1;
   const int column = factorizeSupernode(s, run.a, run.values, run.pivots, run.updates, parts);
   if (column < 0) {
     if (run.forward) forwardFront(s, run.values, run.forward, 1, run.vectors);  // the front is in cache

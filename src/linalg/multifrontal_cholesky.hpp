@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "linalg/block_pool.hpp"
+#include "linalg/dense_front.hpp"
 #include "linalg/linear_solver.hpp"
 
 namespace aster::linalg {
@@ -53,10 +54,7 @@ class MultifrontalCholesky {
  public:
   // Below this many estimated flops a factorization runs on one thread.
   static constexpr double kParallelFlops = 2e7;
-  // Fronts of this many flops or more, and wider than the narrow fronts' kernels take
-  // (small_front.hpp), have their dense work split into pieces. The kernels on one thread
-  // beat the BLAS's pieces on both (SVK square N = 256: factorizations 4.43-4.49 s with
-  // those fronts split, 4.19-4.31 s without).
+  // Fronts of this many flops or more have their dense work split into pieces.
   static constexpr double kSliceFlops = 4e6;
 
   // Plans the factorization of matrices with A's pattern, both triangles stored (the same
@@ -121,6 +119,7 @@ class MultifrontalCholesky {
   std::vector<int> postorder_;         // the supernodes, each subtree a contiguous run
   std::vector<int> subtreeStart_;      // where s's subtree starts in postorder_
   std::vector<int> position_;          // where s is in postorder_
+  FrontKernels kernels_ = frontKernelsInUse();  // the dense work of the fronts
   mutable BlockPool pool_;             // the large update matrices, from one factorization to the next
 };
 

@@ -1,11 +1,13 @@
-#include "linalg/small_front.hpp"
+#include "linalg/dense_front.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -41,15 +43,17 @@ std::vector<FrontKernels> runnableKernels() {
 struct Shape {
   int width, m;
 };
-// Widths around the tiles (4 columns, 8 rows) and up to the largest front the kernels take.
-const Shape kShapes[] = {{1, 1},  {1, 9},   {2, 2},    {3, 12},   {4, 4},   {4, 13},   {5, 5},
-                         {5, 17}, {7, 30},  {8, 8},    {8, 16},   {9, 40},  {12, 20},  {16, 63},
-                         {17, 18}, {31, 70}, {33, 100}, {64, 237}, {100, 101}, {kSmallFrontWidth, 300}};
+// Widths around the tiles (4 and 8 columns, 8 and 16 rows), the panels (kFrontPanel
+// columns) and the packed copies (256 columns at a time).
+const Shape kShapes[] = {{1, 1},    {1, 9},     {2, 2},     {3, 12},    {4, 4},     {4, 13},    {5, 5},
+                         {5, 17},   {7, 30},    {8, 8},     {8, 16},    {9, 40},    {12, 20},   {16, 63},
+                         {17, 18},  {31, 70},   {33, 100},  {64, 237},  {100, 101}, {128, 300}, {129, 140},
+                         {200, 450}, {260, 261}, {300, 700}};
 
 // The factorized front reproduces the front: L11 L11^T = B11 and L21 L11^T = B21, to the
 // rounding of sums of `width` products of entries of size about sqrt(m). The entries above
 // L11's diagonal are not touched (the solves and CHOLMOD's storage expect them as given).
-TEST(SmallFront, FactorReproducesTheFront) {
+TEST(DenseFront, FactorReproducesTheFront) {
   const double mark = 7.25;
   for (const FrontKernels kernels : runnableKernels())
   for (const Shape& s : kShapes) {
@@ -59,7 +63,8 @@ TEST(SmallFront, FactorReproducesTheFront) {
     for (int j = 0; j < w; ++j)
       for (int i = 0; i < j; ++i) L[i + static_cast<size_t>(j) * m] = mark;
     SCOPED_TRACE(std::string(frontKernelsName(kernels)) + ", " + std::to_string(w) + " x " + std::to_string(m));
-    ASSERT_EQ(smallFrontFactor(w, m, L.data(), kernels), 0);
+    std::vector<double> workspace(frontWorkspace(m));
+    ASSERT_EQ(factorFront(w, m, L.data(), workspace.data(), kernels), 0);
     for (int j = 0; j < w; ++j)
       for (int i = 0; i < j; ++i) ASSERT_EQ(L[i + static_cast<size_t>(j) * m], mark);
     double largest = 0.0, error = 0.0;
@@ -76,33 +81,71 @@ TEST(SmallFront, FactorReproducesTheFront) {
   }
 }
 
-// The update matrix is -L21 L21^T on and below its diagonal, summed here directly.
-TEST(SmallFront, UpdateIsMinusL21L21Transposed) {
+// The update matrix is -L21 L21^T on and below its diagonal, summed here directly, and
+// nothing is written above the diagonal.
+TEST(DenseFront, UpdateIsMinusL21L21Transposed) {
   std::mt19937 random(3);
   std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  const double mark = -3.5;
   for (const FrontKernels kernels : runnableKernels())
   for (const Shape& s : kShapes) {
     const int w = s.width, u = s.m - s.width, ld = s.m + 3;  // L21 inside a larger block
     if (u == 0) continue;
-    std::vector<double> L21(static_cast<size_t>(ld) * w), U(static_cast<size_t>(u) * u, 0.0);
+    std::vector<double> L21(static_cast<size_t>(ld) * w), U(static_cast<size_t>(u) * u, mark);
     for (double& x : L21) x = entry(random);
-    std::vector<double> workspace(smallFrontWorkspace(u, w));
-    smallFrontUpdate(u, w, L21.data(), ld, U.data(), workspace.data(), kernels);
+    std::vector<double> workspace(frontWorkspace(u));
+    updateMatrix(u, w, L21.data(), ld, U.data(), workspace.data(), kernels);
     double error = 0.0;
-    for (int j = 0; j < u; ++j)
+    for (int j = 0; j < u; ++j) {
+      for (int i = 0; i < j; ++i) ASSERT_EQ(U[i + static_cast<size_t>(j) * u], mark) << frontKernelsName(kernels);
       for (int i = j; i < u; ++i) {
         double sum = 0.0;
         for (int k = 0; k < w; ++k) sum -= L21[i + static_cast<size_t>(k) * ld] * L21[j + static_cast<size_t>(k) * ld];
         error = std::max(error, std::abs(U[i + static_cast<size_t>(j) * u] - sum));
       }
+    }
     EXPECT_LE(error, 4 * w * std::numeric_limits<double>::epsilon()) << frontKernelsName(kernels) << ", " << w << " x " << u;
+  }
+}
+
+// A front cut into pieces as the threads share it (each panel's diagonal block, its rows
+// below in slices, its products with the next columns in slices of those columns; the
+// update matrix in slices of its columns) gives the same bits as the whole front.
+TEST(DenseFront, PiecesGiveTheBitsOfTheWholeFront) {
+  for (const FrontKernels kernels : runnableKernels()) {
+    if (kernels == FrontKernels::Blas) continue;
+    for (const Shape& s : {Shape{200, 450}, Shape{300, 700}, Shape{40, 90}}) {
+      const int w = s.width, m = s.m, u = m - w;
+      SCOPED_TRACE(std::string(frontKernelsName(kernels)) + ", " + std::to_string(w) + " x " + std::to_string(m));
+      const std::vector<double> B = spdMatrix(m, 17 + w);
+      std::vector<double> whole(B.begin(), B.begin() + static_cast<size_t>(m) * w), pieces = whole;
+      std::vector<double> workspace(frontWorkspace(m));
+      ASSERT_EQ(factorFront(w, m, whole.data(), workspace.data(), kernels), 0);
+      for (int p0 = 0; p0 < w; p0 += kFrontPanel) {
+        const int b = std::min(kFrontPanel, w - p0), below = m - p0 - b, trailing = w - p0 - b;
+        double* panel = pieces.data() + p0 + static_cast<size_t>(p0) * m;
+        ASSERT_EQ(factorDiagonalBlock(b, m, panel, kernels), 0);
+        for (const auto& [r0, r1] : {std::pair{0, below / 3}, std::pair{below / 3, below / 2}, std::pair{below / 2, below}})
+          if (r1 > r0) solveRowsBelow(b, m, panel, r1 - r0, panel + b + r0, kernels);
+        for (const auto& [c0, c1] : {std::pair{0, trailing / 4}, std::pair{trailing / 4, trailing}})
+          if (c1 > c0)
+            subtractLowerProducts(below, c0, c1, b, panel + b, m, panel + b + static_cast<size_t>(b) * m, m,
+                                  workspace.data(), false, kernels);
+      }
+      EXPECT_EQ(pieces, whole);
+      std::vector<double> Uwhole(static_cast<size_t>(u) * u, 0.0), Upieces = Uwhole;
+      updateMatrix(u, w, whole.data() + w, m, Uwhole.data(), workspace.data(), kernels);
+      for (const auto& [c0, c1] : {std::pair{0, 13}, std::pair{13, u / 2}, std::pair{u / 2, u}})
+        subtractLowerProducts(u, c0, c1, w, whole.data() + w, m, Upieces.data(), u, workspace.data(), true, kernels);
+      EXPECT_EQ(Upieces, Uwhole);
+    }
   }
 }
 
 // A pivot that is not positive stops the factorization at its column, 1-based, as
 // LAPACK's dpotrf reports it: zero, negative, or NaN (which OpenBLAS's dpotrf lets
 // through: the BLAS path is not asked for it).
-TEST(SmallFront, NonPositivePivotNamesItsColumn) {
+TEST(DenseFront, NonPositivePivotNamesItsColumn) {
   const int w = 9, m = 20;
   for (const FrontKernels kernels : runnableKernels())
   for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
@@ -114,39 +157,41 @@ TEST(SmallFront, NonPositivePivotNamesItsColumn) {
     for (int i = 0; i < m; ++i) L[i + 5 * static_cast<size_t>(m)] = 0.0;
     for (int j = 0; j < w; ++j) L[5 + static_cast<size_t>(j) * m] = 0.0;
     L[5 + 5 * static_cast<size_t>(m)] = bad;  // the sixth pivot is then exactly `bad`
-    EXPECT_EQ(smallFrontFactor(w, m, L.data(), kernels), 6) << frontKernelsName(kernels) << ", pivot " << bad;
+    std::vector<double> workspace(frontWorkspace(m));
+    EXPECT_EQ(factorFront(w, m, L.data(), workspace.data(), kernels), 6) << frontKernelsName(kernels) << ", pivot " << bad;
   }
 }
 
 // The AVX2 and AVX-512 builds give the same bits, so that results do not depend on which
 // of the two a CPU runs (each entry is the same sequence of fused multiply-adds).
-TEST(SmallFront, Avx2AndAvx512GiveTheSameBits) {
+TEST(DenseFront, Avx2AndAvx512GiveTheSameBits) {
   if (!frontKernelsRun(FrontKernels::Avx2) || !frontKernelsRun(FrontKernels::Avx512))
     GTEST_SKIP() << "this build or CPU runs only one of them";
   for (const Shape& s : kShapes) {
     const int w = s.width, m = s.m, u = m - w;
     const std::vector<double> B = spdMatrix(m, 5 + w + m);
     std::vector<double> L2(B.begin(), B.begin() + static_cast<size_t>(m) * w), L512 = L2;
-    ASSERT_EQ(smallFrontFactor(w, m, L2.data(), FrontKernels::Avx2), 0);
-    ASSERT_EQ(smallFrontFactor(w, m, L512.data(), FrontKernels::Avx512), 0);
+    std::vector<double> workspace(frontWorkspace(m));
+    ASSERT_EQ(factorFront(w, m, L2.data(), workspace.data(), FrontKernels::Avx2), 0);
+    ASSERT_EQ(factorFront(w, m, L512.data(), workspace.data(), FrontKernels::Avx512), 0);
     EXPECT_EQ(L2, L512) << w << " x " << m;
     if (u == 0) continue;
-    std::vector<double> U2(static_cast<size_t>(u) * u, 0.0), U512 = U2, workspace(smallFrontWorkspace(u, w));
-    smallFrontUpdate(u, w, L2.data() + w, m, U2.data(), workspace.data(), FrontKernels::Avx2);
-    smallFrontUpdate(u, w, L2.data() + w, m, U512.data(), workspace.data(), FrontKernels::Avx512);
-    for (int j = 0; j < u; ++j)
-      for (int i = j; i < u; ++i)
-        ASSERT_EQ(U2[i + static_cast<size_t>(j) * u], U512[i + static_cast<size_t>(j) * u]) << w << " x " << m;
+    std::vector<double> U2(static_cast<size_t>(u) * u, 0.0), U512 = U2;
+    updateMatrix(u, w, L2.data() + w, m, U2.data(), workspace.data(), FrontKernels::Avx2);
+    updateMatrix(u, w, L2.data() + w, m, U512.data(), workspace.data(), FrontKernels::Avx512);
+    EXPECT_EQ(U2, U512) << w << " x " << m;
   }
 }
 
 // A build this CPU does not run is refused by name, never run.
-TEST(SmallFront, KernelsThisCpuDoesNotRunAreRefused) {
+TEST(DenseFront, KernelsThisCpuDoesNotRunAreRefused) {
   for (const FrontKernels kernels : {FrontKernels::Avx2, FrontKernels::Avx512}) {
     if (frontKernelsRun(kernels)) continue;
-    double pivot = 4.0;
-    EXPECT_THROW(smallFrontFactor(1, 1, &pivot, kernels), Error) << frontKernelsName(kernels);
+    double pivot = 4.0, workspace[64];
+    EXPECT_THROW(factorFront(1, 1, &pivot, workspace, kernels), Error) << frontKernelsName(kernels);
   }
+  double pivot = 4.0;
+  EXPECT_THROW(factorDiagonalBlock(1, 1, &pivot, FrontKernels::Blas), Error);  // pieces: the kernels only
   EXPECT_TRUE(frontKernelsRun(frontKernelsInUse()));
 }
 
