@@ -10,7 +10,10 @@
 // With --csv or --solver GCPC, a '#' line adds the counts (GCPC: the preconditioner's
 // factorizations, the conjugate gradient's iterations per Newton solve) and Ry to 12 digits.
 //   bench_svk_square [N ...] [--solver MULT_FRONT|MUMPS|GCPC|UMFPACK|CHOLMOD|KLU|EIGEN_LU]
-//                    [--prediction TANGENTE|EXTRAPOLE] [--dgemm n] [--csv]
+//                    [--prediction TANGENTE|EXTRAPOLE] [--front-kernels BLAS|AVX2|AVX512]
+//                    [--dgemm n] [--csv]
+// --front-kernels: the multifrontal factorization's dense work by the BLAS or by one build
+// of its own kernels (linalg/dense_front.hpp; default: the fastest the CPU runs).
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -26,6 +29,7 @@
 #include "support/square_mesh.hpp"
 #include "expr/expression.hpp"
 #include "linalg/blas_info.hpp"
+#include "linalg/dense_front.hpp"
 #include "linalg/factor_memory.hpp"
 #include "analysis/convergence_table.hpp"
 #include "analysis/static_nonlinear.hpp"
@@ -154,20 +158,26 @@ int main(int argc, char** argv) {
       dgemmSize = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--prediction") && i + 1 < argc)
       extrapolate = !std::strcmp(argv[++i], "EXTRAPOLE");
-    else if (!std::strcmp(argv[i], "--csv"))
+    else if (!std::strcmp(argv[i], "--front-kernels") && i + 1 < argc) {
+      const std::string name = argv[++i];
+      linalg::useFrontKernels(name == "BLAS" ? linalg::FrontKernels::Blas
+                              : name == "AVX2" ? linalg::FrontKernels::Avx2
+                                               : linalg::FrontKernels::Avx512);
+    } else if (!std::strcmp(argv[i], "--csv"))
       csv = true;
     else if (std::atoi(argv[i]) >= 1)
       sizes.push_back(std::atoi(argv[i]));
     else {
       std::fprintf(stderr, "usage: bench_svk_square [N ...] [--solver METHODE] [--prediction TANGENTE|EXTRAPOLE] "
-                           "[--dgemm n] [--csv]\n");
+                           "[--front-kernels BLAS|AVX2|AVX512] [--dgemm n] [--csv]\n");
       return !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h") ? 0 : 2;
     }
   }
   const linalg::BlasInfo blas = linalg::blasInUse();
-  std::printf("%s BLAS: %s (%s, core %s, %d threads)\n", csv ? "#" : "", blas.library.c_str(),
+  std::printf("%s BLAS: %s (%s, core %s, %d threads); front kernels: %s\n", csv ? "#" : "", blas.library.c_str(),
               blas.openblasConfig.empty() ? "-" : blas.openblasConfig.c_str(),
-              blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(), linalg::startupBlasThreads());
+              blas.openblasCore.empty() ? "-" : blas.openblasCore.c_str(), linalg::startupBlasThreads(),
+              linalg::frontKernelsName(linalg::frontKernelsInUse()));
   if (dgemmSize > 0) {
     // Every thread OpenBLAS would use, although the process started it on one.
     const linalg::ScopedBlasThreads all(linalg::startupBlasThreads());

@@ -1,5 +1,6 @@
 #include "linalg/dense_front.hpp"
 
+#include <atomic>
 #include <string>
 
 #include "core/error.hpp"
@@ -41,12 +42,17 @@ bool frontKernelsRun(FrontKernels kernels) {
   return false;
 }
 
-FrontKernels frontKernelsInUse() {
-  static const FrontKernels best = frontKernelsRun(FrontKernels::Avx512) ? FrontKernels::Avx512
-                                   : frontKernelsRun(FrontKernels::Avx2) ? FrontKernels::Avx2
-                                                                         : FrontKernels::Blas;
-  return best;
+namespace {
+std::atomic<FrontKernels>& chosenKernels() {
+  static std::atomic<FrontKernels> chosen{frontKernelsRun(FrontKernels::Avx512) ? FrontKernels::Avx512
+                                          : frontKernelsRun(FrontKernels::Avx2) ? FrontKernels::Avx2
+                                                                                : FrontKernels::Blas};
+  return chosen;
 }
+}  // namespace
+
+FrontKernels frontKernelsInUse() { return chosenKernels().load(std::memory_order_relaxed); }
+
 
 const char* frontKernelsName(FrontKernels kernels) {
   switch (kernels) {
@@ -80,6 +86,11 @@ void requireRunnable(FrontKernels kernels, bool blasToo) {
 #endif
 
 }  // namespace
+
+void useFrontKernels(FrontKernels kernels) {
+  requireRunnable(kernels, true);
+  chosenKernels().store(kernels, std::memory_order_relaxed);
+}
 
 int factorFront(int width, int m, double* block, double* workspace, FrontKernels kernels) {
   requireRunnable(kernels, true);

@@ -29,8 +29,11 @@ enum class FrontKernels { Blas, Avx2, Avx512 };
 // Columns of a panel: factorFront goes panel by panel, and so do the front's pieces.
 inline constexpr int kFrontPanel = 128;
 
-// The fastest kernels this build and this CPU run, and whether they run `kernels`.
+// The kernels factorizations planned from now on use: the fastest this build and this
+// CPU run, unless useFrontKernels chose others (benchmarks compare them). Whether they
+// run `kernels`, and their name.
 FrontKernels frontKernelsInUse();
+void useFrontKernels(FrontKernels kernels);  // throws aster::Error when they do not run here
 bool frontKernelsRun(FrontKernels kernels);
 const char* frontKernelsName(FrontKernels kernels);
 
