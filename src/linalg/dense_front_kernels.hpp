@@ -8,8 +8,9 @@ namespace aster::linalg {
 // Columns of the products a packed copy holds at a time.
 inline constexpr int kDepth = 256;
 
-// Rows of a packed copy of `rows` rows: rounded up to 8, and 8 more, zero.
-inline int packedRows(int rows) { return ((rows + 7) / 8) * 8 + 8; }
+// Rows of a packed copy of `rows` rows: rounded up to 16 (a tile's rows in either build),
+// and 16 more, zero.
+inline int packedRows(int rows) { return ((rows + 15) / 16) * 16 + 16; }
 
 #define ASTER_DENSE_FRONT_KERNELS                                                                                 \
   int factorDiagonal(int width, int ld, double* diag);                                                            \
