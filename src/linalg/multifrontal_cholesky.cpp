@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <climits>
+#include <cstdint>
 #include <functional>
 #include <cmath>
 #include <memory>
@@ -336,9 +337,8 @@ MultifrontalCholesky::MultifrontalCholesky(const SupernodalStructure& structure,
   std::vector<int> inverse(n);
   for (int k = 0; k < n; ++k) inverse[S.permutation ? S.permutation[k] : k] = k;
   entryStart_.assign(ns + 1, 0);
-  entrySource_.clear();
+  entryInFactor_.assign((static_cast<size_t>(A.nonZeros()) + 63) / 64, 0);
   entryTarget_.clear();
-  entrySource_.reserve(A.nonZeros() / 2 + n);
   entryTarget_.reserve(A.nonZeros() / 2 + n);
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
@@ -351,12 +351,12 @@ MultifrontalCholesky::MultifrontalCholesky(const SupernodalStructure& structure,
         const int r = inverse[inner[p]];
         if (r < k) continue;
         if (position[r] < 0) throw Error("multifrontal Cholesky: an entry of the matrix is outside the factor's pattern");
-        entrySource_.push_back(p);
+        entryInFactor_[static_cast<size_t>(p) / 64] |= std::uint64_t{1} << (p % 64);
         entryTarget_.push_back(position[r] + (k - k1) * m);
       }
     }
     for (int i = S.rowStart[s]; i < S.rowStart[s + 1]; ++i) position[S.rows[i]] = -1;
-    entryStart_[s + 1] = static_cast<long long>(entrySource_.size());
+    entryStart_[s + 1] = static_cast<long long>(entryTarget_.size());
   }
   schedule(threads, parallelFlops);
 }
@@ -398,7 +398,7 @@ void MultifrontalCholesky::schedule(int threads, double parallelFlops) {
   splitFlops_ = std::max(1e6, totalFlops_ / (16.0 * threads_));
 }
 
-int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* values, double* pivots,
+int MultifrontalCholesky::factorizeSupernode(int s, const SparseMatrix& A, double* values, double* pivots,
                                              Updates& updates, int parts) const {
   const SupernodalStructure& S = structure_;
   const int k1 = S.firstColumn[s];
@@ -408,7 +408,16 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
   double* block = values + S.valueStart[s];
   const double T0 = nowS();
   std::fill(block, block + static_cast<size_t>(m) * width, 0.0);
-  for (long long e = entryStart_[s]; e < entryStart_[s + 1]; ++e) block[entryTarget_[e]] = a[entrySource_[e]];
+  {  // A's entries in the front: those of its columns flagged at the plan, in their order
+    const double* a = A.valuePtr();
+    const int* outer = A.outerIndexPtr();
+    long long e = entryStart_[s];
+    for (int k = k1; k < k1 + width; ++k) {
+      const int j = S.permutation ? S.permutation[k] : k;
+      for (int p = outer[j]; p < outer[j + 1]; ++p)
+        if (entryInFactor_[static_cast<size_t>(p) / 64] >> (p % 64) & 1u) block[entryTarget_[e++]] = a[p];
+    }
+  }
   auto childUpdate = [&](int e, int& cu, const int*& relative) {
     const int c = children_[e];
     cu = static_cast<int>(relativeStart_[c + 1] - relativeStart_[c]);
@@ -472,7 +481,7 @@ int MultifrontalCholesky::factorizeSupernode(int s, const double* a, double* val
 
 // One factorization's shared state: the first failing column (INT_MAX: none yet).
 struct MultifrontalCholesky::Run {
-  const double* a;
+  const SparseMatrix& A;
   double* values;
   double* pivots;
   Updates updates;
@@ -487,7 +496,7 @@ struct MultifrontalCholesky::Run {
 void MultifrontalCholesky::factorizeFront(int s, Run& run) const {
   if (run.failure.load(std::memory_order_relaxed) < structure_.firstColumn[s]) return;
   const int parts = threads_ > 1 && flops_[s] >= kSliceFlops ? 2 * threads_ : 1;
-  const int column = factorizeSupernode(s, run.a, run.values, run.pivots, run.updates, parts);
+  const int column = factorizeSupernode(s, run.A, run.values, run.pivots, run.updates, parts);
   if (column < 0) {
     if (run.forward) forwardFront(s, run.values, run.forward, 1, run.vectors);  // the front is in cache
     return;
@@ -562,10 +571,10 @@ int MultifrontalCholesky::factorize(const SparseMatrix& A, double* values, doubl
 
 int MultifrontalCholesky::factorizeRun(const SparseMatrix& A, double* values, double* pivots, double* forward) const {
   const int ns = structure_.supernodeCount;
-  Run run{A.valuePtr(), values, pivots, Updates(ns), forward, Updates(forward ? ns : 0)};
+  Run run{A, values, pivots, Updates(ns), forward, Updates(forward ? ns : 0)};
   if (threads_ < 2) {
     for (int s = 0; s < ns; ++s) {
-      const int column = factorizeSupernode(s, run.a, values, pivots, run.updates, 1);
+      const int column = factorizeSupernode(s, A, values, pivots, run.updates, 1);
       if (column >= 0) return column;
       if (forward) forwardFront(s, values, forward, 1, run.vectors);
     }

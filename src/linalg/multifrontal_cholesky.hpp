@@ -29,6 +29,7 @@
 // pivots first and then those of -(C + B K^-1 B^T), negative. Solve with
 // L y = P b, z = S y, L^T P x = z.
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -96,7 +97,7 @@ class MultifrontalCholesky {
   void walkDown(int s, const std::function<void(int)>& front, int depth) const;
   int onlyLargeChild(int s) const;  // the one child of s when its subtree is split further, else -1
   // parts > 1: the front's dense work split between that many threads (top of the tree).
-  int factorizeSupernode(int s, const double* a, double* values, double* pivots, Updates& updates,
+  int factorizeSupernode(int s, const SparseMatrix& A, double* values, double* pivots, Updates& updates,
                          int parts) const;
   void schedule(int threads, double parallelFlops);
 
@@ -106,9 +107,13 @@ class MultifrontalCholesky {
   std::vector<int> children_;
   std::vector<long long> relativeStart_;  // update rows of s as positions in its parent's rows
   std::vector<int> relative_;
-  std::vector<long long> entryStart_;  // entries of A in supernode s: entryStart_[s] .. entryStart_[s + 1]
-  std::vector<int> entrySource_;       // index in A's values
-  std::vector<int> entryTarget_;       // offset in the supernode's block of L
+  // The entries of A (lower triangle of P A P^T) in supernode s: those of its columns whose
+  // bit is set in entryInFactor_ (one bit per entry of A's storage: a third of the memory
+  // of an index per entry), in the order of the columns, at offsets
+  // entryTarget_[entryStart_[s] .. entryStart_[s + 1]) of the supernode's block of L.
+  std::vector<long long> entryStart_;
+  std::vector<std::uint64_t> entryInFactor_;
+  std::vector<int> entryTarget_;
   std::vector<double> flops_;          // estimate per supernode
   std::vector<char> signedFront_;      // per supernode: holds an indefinite column
   double totalFlops_ = 0;
