@@ -9,12 +9,6 @@
 #include <memory>
 #include <new>
 #include <numeric>
-#include <chrono>
-#include <cstdio>
-#include <mutex>
-namespace { struct Rec{int w,m; double t0,t1,t2,t3;}; struct Prof { std::vector<Rec> r; std::mutex mu; int calls=0;
- ~Prof(){ FILE* f=std::fopen("/tmp/fronts.txt","w"); for(auto& x:r) std::fprintf(f,"%d %d %.9f %.9f %.9f\n",x.w,x.m,x.t1-x.t0,x.t2-x.t1,x.t3-x.t2); std::fclose(f);} } gProf;
- double nowS(){ return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); } }
 
 #include "core/worker_pool.hpp"
 #include "linalg/blas_info.hpp"
@@ -406,7 +400,6 @@ int MultifrontalCholesky::factorizeSupernode(int s, const SparseMatrix& A, doubl
   const int m = S.rowStart[s + 1] - S.rowStart[s];
   const int u = m - width;
   double* block = values + S.valueStart[s];
-  const double T0 = nowS();
   std::fill(block, block + static_cast<size_t>(m) * width, 0.0);
   {  // A's entries in the front: those of its columns flagged at the plan, in their order
     const double* a = A.valuePtr();
@@ -430,7 +423,6 @@ int MultifrontalCholesky::factorizeSupernode(int s, const SparseMatrix& A, doubl
     const double* update = childUpdate(e, cu, relative);
     addIntoBlock(update, cu, relative, blockColumns(relative, cu, width), block, m);
   }
-  const double T1 = nowS();
   int info = 0;
   std::vector<double> sign(signedFront_[s] ? width : 0);
   if (signedFront_[s]) {
@@ -467,7 +459,6 @@ int MultifrontalCholesky::factorizeSupernode(int s, const SparseMatrix& A, doubl
       dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &zero, updates[s].get(), &u);
     }
   }
-  const double T2 = nowS();
   for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {
     int cu = 0;
     const int* relative = nullptr;
@@ -475,7 +466,6 @@ int MultifrontalCholesky::factorizeSupernode(int s, const SparseMatrix& A, doubl
     addIntoUpdate(update, cu, relative, blockColumns(relative, cu, width), width, updates[s].get(), u);
     updates[children_[e]].reset();
   }
-  { const double T3 = nowS(); std::lock_guard<std::mutex> g(gProf.mu); if (gProf.r.size() < 3000000) gProf.r.push_back({width,m,T0,T1,T2,T3}); }
   return -1;
 }
 
