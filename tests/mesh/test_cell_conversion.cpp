@@ -245,7 +245,9 @@ TEST(DecoupeLac, QuadrangleCutInFourUnderItsSlaveSegment) {
     const auto n = out.cellNodes(slave[k]);
     EXPECT_NEAR((out.node(n[1]) - out.node(n[0])).norm(), 1.0, 1e-14);
     EXPECT_LT(out.node(n[1]).x(), out.node(n[0]).x());
-    if (k > 0) EXPECT_EQ(n[0], out.cellNodes(slave[k - 1])[1]);
+    if (k > 0) {
+      EXPECT_EQ(n[0], out.cellNodes(slave[k - 1])[1]);
+    }
   }
   EXPECT_EQ(out.nodeGroup("HAUT"), (std::vector<int>{2, 3}));  // groups of nodes unchanged
 }
