@@ -134,8 +134,9 @@ int parallelFrontCholesky(int parts, int width, int m, double* block) {
   return 0;
 }
 
-// Per-thread workspace of the dense front kernels for fronts of `rows` rows.
-double* frontWorkspaceFor(int rows) {
+// Per-thread workspace of the dense front kernels for fronts of `rows` rows (none for the BLAS).
+double* frontWorkspaceFor(FrontKernels kernels, int rows) {
+  if (kernels == FrontKernels::Blas) return nullptr;
   thread_local std::vector<double> workspace;
   const size_t size = frontWorkspace(rows);
   if (workspace.size() < size) workspace.resize(size);
@@ -176,7 +177,7 @@ int parallelFrontKernels(int parts, int width, int m, double* block, FrontKernel
       inParallel(parts, [&](int p) {
         if (first[p] < first[p + 1])
           subtractLowerProducts(below, first[p], first[p + 1], b, panel + b, m, panel + b + static_cast<size_t>(b) * m,
-                                m, frontWorkspaceFor(below - first[p]), false, kernels);
+                                m, frontWorkspaceFor(kernels, below - first[p]), false, kernels);
       });
     }
   }
@@ -188,8 +189,8 @@ void parallelUpdateKernels(int parts, int u, int width, const double* L21, int l
   const std::vector<int> first = balancedColumns(parts, u, u);
   inParallel(parts, [&](int p) {
     if (first[p] < first[p + 1])
-      subtractLowerProducts(u, first[p], first[p + 1], width, L21, ld, U, u, frontWorkspaceFor(u - first[p]), true,
-                            kernels);
+      subtractLowerProducts(u, first[p], first[p + 1], width, L21, ld, U, u, frontWorkspaceFor(kernels, u - first[p]),
+                            true, kernels);
   });
 }
 
@@ -427,36 +428,27 @@ int MultifrontalCholesky::factorizeSupernode(int s, const SparseMatrix& A, doubl
   std::vector<double> sign(signedFront_[s] ? width : 0);
   if (signedFront_[s]) {
     info = signedFrontFactor(width, m, block, sign.data());
-  } else if (kernels_ != FrontKernels::Blas) {
-    info = parts > 1 ? parallelFrontKernels(parts, width, m, block, kernels_)
-                     : factorFront(width, m, block, frontWorkspaceFor(m), kernels_);
-  } else if (parts > 1) {
-    info = parallelFrontCholesky(parts, width, m, block);  // the rows below too
+  } else if (parts > 1) {  // the rows below too
+    info = kernels_ != FrontKernels::Blas ? parallelFrontKernels(parts, width, m, block, kernels_)
+                                          : parallelFrontCholesky(parts, width, m, block);
   } else {
-    dpotrf_("L", &width, block, &m, &info);
-    if (info == 0 && u > 0) {
-      const double one = 1.0;
-      dtrsm_("R", "L", "T", "N", &u, &width, &one, block, &m, block + width, &m);
-    }
+    info = factorFront(width, m, block, frontWorkspaceFor(kernels_, m), kernels_);
   }
   if (info != 0) return k1 + std::max(info, 1) - 1;
   if (pivots)
     for (int k = 0; k < width; ++k)
       pivots[k1 + k] = (sign.empty() ? 1.0 : sign[k]) * block[k + static_cast<size_t>(k) * m];
   if (u > 0) {
-    updates[s] = pool_.take(static_cast<size_t>(u) * u);  // written whole by dsyrk or dgemm
+    updates[s] = pool_.take(static_cast<size_t>(u) * u);  // its lower triangle written below (all of it if signed)
     if (!sign.empty()) {
       signedUpdate(u, width, block + width, m, sign.data(), updates[s].get());
-    } else if (kernels_ != FrontKernels::Blas) {
-      if (parts > 1)
+    } else if (parts > 1) {
+      if (kernels_ != FrontKernels::Blas)
         parallelUpdateKernels(parts, u, width, block + width, m, updates[s].get(), kernels_);
       else
-        updateMatrix(u, width, block + width, m, updates[s].get(), frontWorkspaceFor(u), kernels_);
-    } else if (parts > 1) {
-      parallelSyrk(parts, u, width, block + width, m, 0.0, updates[s].get(), u);
+        parallelSyrk(parts, u, width, block + width, m, 0.0, updates[s].get(), u);
     } else {
-      const double minusOne = -1.0, zero = 0.0;
-      dsyrk_("L", "N", &u, &width, &minusOne, block + width, &m, &zero, updates[s].get(), &u);
+      updateMatrix(u, width, block + width, m, updates[s].get(), frontWorkspaceFor(kernels_, u), kernels_);
     }
   }
   for (int e = childStart_[s]; e < childStart_[s + 1]; ++e) {

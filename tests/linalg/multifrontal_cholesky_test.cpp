@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "linalg/cholmod_views.hpp"
+#include "linalg/dense_front.hpp"
 #include "test_matrices.hpp"
 
 namespace aster::linalg {
@@ -108,12 +109,24 @@ struct Case {
 
 class AgainstCholmod : public ::testing::TestWithParam<Case> {};
 
+// The kernels of the fronts' dense work a test chose, the default's again when it ends.
+struct UsingFrontKernels {
+  const FrontKernels before = frontKernelsInUse();
+  explicit UsingFrontKernels(FrontKernels kernels) { useFrontKernels(kernels); }
+  ~UsingFrontKernels() { useFrontKernels(before); }
+};
+
 // The factor is CHOLMOD's own (same structure, same arithmetic up to rounding), on one
-// thread and planned for 2 or 3 threads (run on the worker pool's).
+// thread and planned for 2 or 3 threads (run on the worker pool's), with the fronts' dense
+// work by the BLAS and by every build of the dense front kernels this CPU runs.
 TEST_P(AgainstCholmod, ComputesCholmodsFactor) {
   const bool parallel = GetParam().threads > 1;
   const SparseMatrix problems[] = {laplacian2d(50), twoLaplacians(30), laplacian3d(18)};
+  for (const FrontKernels kernels : {FrontKernels::Blas, FrontKernels::Avx2, FrontKernels::Avx512})
   for (const SparseMatrix& A : problems) {
+    if (!frontKernelsRun(kernels)) continue;
+    const UsingFrontKernels chosen(kernels);
+    SCOPED_TRACE(frontKernelsName(kernels));
     if (GetParam().ordering == CHOLMOD_NATURAL && A.rows() > 5000) continue;  // a band of m^2: dense and slow
     CholmodReference reference(A, GetParam().ordering);
     ASSERT_EQ(reference.referenceMinor(), static_cast<size_t>(A.rows()));
