@@ -8,6 +8,7 @@
 #include <vector>
 
 
+#include "core/machine_load.hpp"
 #include "core/worker_pool.hpp"
 #include "linalg/blas_info.hpp"
 #include "linalg/cholmod_views.hpp"
@@ -38,6 +39,14 @@ constexpr Eigen::Index kNestedDissectionSize = 20000;
 // more in 3D, where the guess falls short and the rest of the factor is touched later.
 constexpr size_t kFactorEntriesPerEntry = 5;
 constexpr int kFewFactorizations = 3;
+// The factor's memory is touched ahead from this guessed size: a smaller factor's first
+// touch costs less than the thread (SVK square N = 64, guess 31 MB: no faster after 20 s
+// of idling, and the analysis delayed in half the runs with another program on the other
+// core; N = 128, 124 MB: 0.12 s faster after idling).
+constexpr size_t kWarmedFactorBytes = size_t{64} << 20;
+// Other programs' average use of the machine, in cores, above which no core is left idle
+// for touching the factor ahead (unknown, -1, counts as idle).
+constexpr double kOthersBusy = 0.5;
 
 std::string cholmodStatus(int status) {
   switch (status) {
@@ -190,10 +199,15 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   multifrontal_.reset();
   factorStorage_.reset();
   if (h_->factor) cholmod_free_factor(&h_->factor, &h_->common);
-  // The multifrontal factor of a large matrix: its memory touched while the ordering runs.
-  if (mode_ != Mode::LDLT && M.rows() >= kNestedDissectionSize && WorkerPool::shared().threads() > 1)
-    factorStorage_ = std::make_unique<WarmedBlock>(kFactorEntriesPerEntry * static_cast<size_t>(M.nonZeros()) *
-                                                   sizeof(double));
+  // The multifrontal factor of a large matrix: its memory touched while the ordering runs,
+  // on the core the ordering leaves idle. When other programs have been taking about a core
+  // since the program started, the touching only delays the ordering (SVK square N = 128,
+  // a busy loop on the other core: the analysis 0.22-0.87 s with it, 0.19-0.22 s without),
+  // so then the factor's pages are touched where the factorization first writes them.
+  const size_t factorGuess = kFactorEntriesPerEntry * static_cast<size_t>(M.nonZeros()) * sizeof(double);
+  if (mode_ != Mode::LDLT && factorGuess >= kWarmedFactorBytes && WorkerPool::shared().threads() > 1 &&
+      coresUsedByOthers(programStartSample(), sampleCpu()) < kOthersBusy)
+    factorStorage_ = std::make_unique<WarmedBlock>(factorGuess);
   struct StopWarming {  // an analysis that fails leaves no thread touching memory behind
     std::unique_ptr<WarmedBlock>& storage;
     bool done = false;

@@ -13,8 +13,9 @@
 // unmapped, then allocated by CHOLMOD, they saved 0.35 s of the 3 s at N = 512 (the
 // guest's free page reporting to the host would explain it; not verified).
 //
-// With bytes = 0 (the caller's choice: CholmodSolver warms only for 20 000 rows or more
-// and more than one thread) nothing is touched ahead: take() maps the block, and its
+// With bytes = 0 (the caller's choice: CholmodSolver warms only a factor guessed at
+// 64 MiB or more, with more than one thread and no other program taking a core) nothing
+// is touched ahead: take() maps the block, and its
 // pages are touched where they are first written.
 #pragma once
 #include <cstddef>
