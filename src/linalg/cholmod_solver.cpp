@@ -202,7 +202,7 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   // The multifrontal factor of a large matrix: its memory touched while the ordering runs,
   // on the core the ordering leaves idle. When other programs have been taking about a core
   // since the program started, the touching only delays the ordering (SVK square N = 128,
-  // a busy loop on the other core: the analysis 0.22-0.87 s with it, 0.19-0.22 s without),
+  // a busy loop on the other core: the analysis 0.19-0.87 s with it, 0.19-0.23 s without),
   // so then the factor's pages are touched where the factorization first writes them.
   const size_t factorGuess = kFactorEntriesPerEntry * static_cast<size_t>(M.nonZeros()) * sizeof(double);
   if (mode_ != Mode::LDLT && factorGuess >= kWarmedFactorBytes && WorkerPool::shared().threads() > 1 &&
