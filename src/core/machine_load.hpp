@@ -1,27 +1,33 @@
-// How much of the machine other programs are using, for work that only pays on an idle
-// core.
+// How much of the machine other programs are using, for work that only pays on free cores.
 //
 // The kernel counts, per CPU, the time spent running tasks (/proc/stat); the process
-// counts its own CPU time. Between two samples, the CPU time the machine spent running
-// minus what this process spent is what the other programs took, in cores once divided by
-// the wall time. On a machine whose cores all serve this process that tells whether
-// another program holds one; in a container the count is the host's, and the answer errs
-// towards "busy", which only costs what the idle-core work would have saved.
+// counts its own CPU time. Between two samples, the CPU time the CPUs this process may run
+// on spent running, minus what this process spent, is what the other programs took there,
+// in cores once divided by the wall time. In a container whose /proc/stat is the host's and
+// whose share is a quota rather than a set of CPUs, the answer errs towards "busy", which
+// costs at most what the free cores would have given.
 #pragma once
+#include <atomic>
+#include <mutex>
 #include <string>
 
 namespace aster {
 
 struct CpuSample {
-  double machineBusySeconds = -1;  // user, nice, system, irq, softirq of every CPU; -1: unknown
+  double machineBusySeconds = -1;  // user, nice, system, irq, softirq of the CPUs counted; -1: unknown
   double ownSeconds = 0;           // this process's CPU time, all its threads
   double wallSeconds = 0;          // a monotonic clock
 };
 
-// The busy time of the "cpu" line of /proc/stat, in clock ticks; -1 when the line has no
-// such fields.
-double busyTicks(const std::string& procStatCpuLine);
+// One line of /proc/stat: the whole machine's ("cpu ", cpu = -1) or one CPU's ("cpu3 ",
+// cpu = 3), with its busy time in clock ticks. False for any other line.
+struct CpuLine {
+  int cpu = -1;
+  double busyTicks = 0;
+};
+bool parseCpuLine(const std::string& procStatLine, CpuLine& parsed);
 
+// The CPUs this process may run on (its affinity), or the whole machine when that is not known.
 CpuSample sampleCpu();
 
 // The cores other programs used on average between the two samples; -1 when that cannot be
@@ -31,5 +37,27 @@ double coresUsedByOthers(const CpuSample& from, const CpuSample& to, double mini
 
 // A sample taken when the program started (the library's static initialization).
 const CpuSample& programStartSample();
+
+// Threads worth running on `threads` cores of which other programs use `others` (-1:
+// unknown): one per core they leave, rounded, and at least one. A thread that shares a core
+// with another program gets a part of it only, and the work it holds up waits for it.
+int threadsOnFreeCores(int threads, double others);
+
+// threadsOnFreeCores, kept up to date: measured over windows of `window` seconds (the
+// first, from `start`, half as long), the last answer in between. Any thread may ask;
+// asking costs a clock read except once per window.
+class FreeCoreWatch {
+ public:
+  explicit FreeCoreWatch(int threads, double windowSeconds = 0.2, const CpuSample& start = programStartSample());
+  int threads();
+
+ private:
+  const int threads_;
+  const double window_;
+  std::atomic<int> answer_;
+  std::atomic<double> nextCheck_;  // wall seconds
+  std::mutex sampling_;
+  CpuSample last_;
+};
 
 }  // namespace aster

@@ -1,5 +1,7 @@
 #include "core/worker_pool.hpp"
 
+#include "core/machine_load.hpp"
+
 #include <sched.h>
 #include <signal.h>
 
@@ -83,11 +85,14 @@ struct WorkerPool::State {
 
 namespace {
 
+// OMP_NUM_THREADS: "4" or the first of a list "4,2"; 0 when not set.
+int threadsAskedFor() {
+  const char* value = std::getenv("OMP_NUM_THREADS");
+  const int n = value ? std::atoi(value) : 0;
+  return n >= 1 ? std::min(n, 64) : 0;
+}
+
 int threadsOfTheMachine() {
-  if (const char* value = std::getenv("OMP_NUM_THREADS")) {
-    const int n = std::atoi(value);  // "4" or the first of a list "4,2"
-    if (n >= 1) return std::min(n, 64);
-  }
   cpu_set_t set;
   if (sched_getaffinity(0, sizeof set, &set) == 0) return std::clamp(CPU_COUNT(&set), 1, 64);
   return std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 64);
@@ -96,11 +101,17 @@ int threadsOfTheMachine() {
 }  // namespace
 
 WorkerPool& WorkerPool::shared() {
-  static WorkerPool pool(threadsOfTheMachine());
+  static const int asked = threadsAskedFor();
+  static WorkerPool pool(asked ? asked : threadsOfTheMachine(), asked == 0);
   return pool;
 }
 
-WorkerPool::WorkerPool(int threads) : threads_(std::max(1, threads)), state_(new State) {}
+WorkerPool::WorkerPool(int threads, bool yieldToOtherPrograms)
+    : threads_(std::max(1, threads)),
+      freeCores_(yieldToOtherPrograms && threads_ > 1 ? std::make_unique<FreeCoreWatch>(threads_) : nullptr),
+      state_(new State) {}
+
+int WorkerPool::threadsNow() { return freeCores_ ? freeCores_->threads() : threads_; }
 
 WorkerPool::~WorkerPool() {
   {
@@ -126,6 +137,10 @@ void WorkerPool::workerMain() {
 
 void WorkerPool::forEach(int count, const std::function<void(int)>& body, int maxThreads) {
   if (count <= 0) return;
+  if (threads_ > 1 && count > 1) {
+    const int now = threadsNow();
+    if (maxThreads <= 0 || maxThreads > now) maxThreads = now;
+  }
   if (threads_ == 1 || count == 1 || maxThreads == 1) {
     for (int i = 0; i < count; ++i) body(i);
     return;

@@ -477,7 +477,13 @@ struct MultifrontalCholesky::Run {
 // smallest failing one, as a front's columns follow its descendants').
 void MultifrontalCholesky::factorizeFront(int s, Run& run) const {
   if (run.failure.load(std::memory_order_relaxed) < structure_.firstColumn[s]) return;
-  const int parts = threads_ > 1 && flops_[s] >= kSliceFlops ? 2 * threads_ : 1;
+  // A large front in pieces for the pool's threads. The front kernels give the same bits
+  // cut or whole, so while the pool runs on one thread (other programs holding the other
+  // cores) the front is computed whole, which is faster; BLAS pieces are cut the same way
+  // whatever the load, since their bits depend on the cut.
+  const bool cut = threads_ > 1 && flops_[s] >= kSliceFlops &&
+                   (kernels_ == FrontKernels::Blas || WorkerPool::shared().threadsNow() > 1);
+  const int parts = cut ? 2 * threads_ : 1;
   const int column = factorizeSupernode(s, run.A, run.values, run.pivots, run.updates, parts);
   if (column < 0) {
     if (run.forward) forwardFront(s, run.values, run.forward, 1, run.vectors);  // the front is in cache

@@ -1,17 +1,33 @@
 #include "core/machine_load.hpp"
 
 #include <gtest/gtest.h>
+#include <sched.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
 
 namespace aster {
 namespace {
 
-TEST(MachineLoad, ReadsTheBusyTicksOfTheCpuLine) {
+TEST(MachineLoad, ReadsTheBusyTicksOfTheCpuLines) {
   // user nice system idle iowait irq softirq steal guest guest_nice
-  EXPECT_EQ(busyTicks("cpu  4196333 0 672241 2500818 10802 0 4027 11492 0 0\n"), 4196333.0 + 672241 + 4027);
-  EXPECT_EQ(busyTicks("cpu 1 2 3 4 5 6 7"), 1.0 + 2 + 3 + 6 + 7);
-  EXPECT_EQ(busyTicks("cpu0 1 2 3 4 5 6 7"), -1);
-  EXPECT_EQ(busyTicks("cpu 1 2 3"), -1);
-  EXPECT_EQ(busyTicks(""), -1);
+  CpuLine line;
+  ASSERT_TRUE(parseCpuLine("cpu  4196333 0 672241 2500818 10802 0 4027 11492 0 0\n", line));
+  EXPECT_EQ(line.cpu, -1);
+  EXPECT_EQ(line.busyTicks, 4196333.0 + 672241 + 4027);
+  ASSERT_TRUE(parseCpuLine("cpu 1 2 3 4 5 6 7", line));
+  EXPECT_EQ(line.busyTicks, 1.0 + 2 + 3 + 6 + 7);
+  ASSERT_TRUE(parseCpuLine("cpu12 1 2 3 4 5 6 7 8 9 10", line));
+  EXPECT_EQ(line.cpu, 12);
+  EXPECT_EQ(line.busyTicks, 1.0 + 2 + 3 + 6 + 7);
+  EXPECT_FALSE(parseCpuLine("cpu 1 2 3", line));
+  EXPECT_FALSE(parseCpuLine("cpux 1 2 3 4 5 6 7", line));
+  EXPECT_FALSE(parseCpuLine("cpu3", line));
+  EXPECT_FALSE(parseCpuLine("intr 1 2 3 4 5 6 7", line));
+  EXPECT_FALSE(parseCpuLine("", line));
 }
 
 TEST(MachineLoad, OthersAreWhatTheMachineRanLessWhatTheProcessRan) {
@@ -31,12 +47,50 @@ TEST(MachineLoad, OthersAreWhatTheMachineRanLessWhatTheProcessRan) {
   EXPECT_EQ(coresUsedByOthers(from, to), -1);
 }
 
+TEST(MachineLoad, OneThreadPerCoreTheOthersLeave) {
+  EXPECT_EQ(threadsOnFreeCores(2, -1), 2);  // unknown: every core
+  EXPECT_EQ(threadsOnFreeCores(2, 0.0), 2);
+  EXPECT_EQ(threadsOnFreeCores(2, 0.4), 2);
+  EXPECT_EQ(threadsOnFreeCores(2, 0.6), 1);  // a busy loop beside two threads of ours: 2/3 of a core
+  EXPECT_EQ(threadsOnFreeCores(2, 1.0), 1);
+  EXPECT_EQ(threadsOnFreeCores(2, 5.0), 1);  // never none
+  EXPECT_EQ(threadsOnFreeCores(8, 1.0), 7);
+  EXPECT_EQ(threadsOnFreeCores(8, 2.7), 5);
+  EXPECT_EQ(threadsOnFreeCores(1, 0.0), 1);
+}
+
 TEST(MachineLoad, SamplesTheRunningSystem) {
   const CpuSample s = sampleCpu();
   if (s.machineBusySeconds < 0) GTEST_SKIP() << "no /proc/stat";
   EXPECT_GT(s.machineBusySeconds, 0.0);
   EXPECT_GE(s.ownSeconds, 0.0);
   EXPECT_GE(s.wallSeconds, programStartSample().wallSeconds);
+}
+
+// A child process that spins on one of this process's cores is another program: the watch
+// leaves it that core.
+TEST(MachineLoad, TheWatchLeavesACoreToASpinningProcess) {
+  cpu_set_t mine;
+  ASSERT_EQ(sched_getaffinity(0, sizeof mine, &mine), 0);
+  const int cores = CPU_COUNT(&mine);
+  if (cores < 2) GTEST_SKIP() << "one core";
+  if (sampleCpu().machineBusySeconds < 0) GTEST_SKIP() << "no /proc/stat";
+  FreeCoreWatch watch(cores, 0.2, sampleCpu());
+  EXPECT_EQ(watch.threads(), cores);  // no window yet
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    volatile unsigned long spins = 0;
+    while (std::chrono::steady_clock::now() < end) ++spins;
+    _exit(0);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const int threads = watch.threads();
+  kill(child, SIGKILL);
+  waitpid(child, nullptr, 0);
+  EXPECT_GE(threads, 1);
+  EXPECT_LE(threads, cores - 1);
 }
 
 }  // namespace

@@ -106,6 +106,15 @@ TEST(WorkerPool, IdleWorkersDoNotSpin) {
   EXPECT_EQ(sum.load(), 4950);
 }
 
+// A pool with a fixed count (OMP_NUM_THREADS) does not yield: every thread, whatever else runs.
+TEST(WorkerPool, AFixedCountIsKept) {
+  WorkerPool pool(3);
+  EXPECT_EQ(pool.threadsNow(), 3);
+  WorkerPool yielding(3, true);
+  EXPECT_GE(yielding.threadsNow(), 1);
+  EXPECT_LE(yielding.threadsNow(), 3);
+}
+
 TEST(WorkerPool, OneThreadRunsInOrderOnTheCaller) {
   WorkerPool pool(1);
   std::vector<int> order;

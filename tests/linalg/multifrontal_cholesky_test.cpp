@@ -154,6 +154,29 @@ INSTANTIATE_TEST_SUITE_P(Orderings, AgainstCholmod,
                                            Case{"NATURAL", CHOLMOD_NATURAL, 2}),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// With the dense front kernels a front gives the same bits whole or cut into pieces for
+// several threads, so the factor is the same on one thread as planned for two or three
+// (and a front computed whole while other programs hold the pool's other cores changes
+// nothing).
+TEST(MultifrontalCholesky, FrontKernelsGiveTheSameBitsOnAnyNumberOfThreads) {
+  const SparseMatrix A = laplacian3d(18);  // top fronts above kSliceFlops: cut into pieces
+  CholmodReference reference(A, CHOLMOD_NESDIS);
+  for (const FrontKernels kernels : {FrontKernels::Avx2, FrontKernels::Avx512}) {
+    if (!frontKernelsRun(kernels)) continue;
+    const UsingFrontKernels chosen(kernels);
+    std::vector<double> first;
+    for (int threads : {1, 2, 3}) {
+      const MultifrontalCholesky plan(reference.structure(), A, threads, 0.0);
+      std::vector<double> values(reference.storage());
+      ASSERT_EQ(plan.factorize(A, values.data()), -1);
+      if (threads == 1)
+        first = values;
+      else
+        EXPECT_EQ(values, first) << frontKernelsName(kernels) << ", " << threads << " threads";
+    }
+  }
+}
+
 // New values on the same pattern: the plan is reused, the factor follows the values.
 TEST(MultifrontalCholesky, RefactorizesNewValues) {
   SparseMatrix A = laplacian2d(40);
