@@ -88,6 +88,26 @@ namespace {
 [[maybe_unused]] const CpuSample& startTaken = programStartSample();
 }  // namespace
 
+int runnableTasks(const std::string& procStat) {
+  const std::string key = "\nprocs_running ";
+  const size_t at = procStat.find(key);
+  if (at == std::string::npos) return -1;
+  char* end = nullptr;
+  const char* digits = procStat.c_str() + at + key.size();
+  const long n = std::strtol(digits, &end, 10);
+  return end == digits || n < 0 || n > 1 << 20 ? -1 : static_cast<int>(n);
+}
+
+int runnableTasksNow() {
+  std::FILE* f = std::fopen("/proc/stat", "r");
+  if (!f) return -1;
+  std::string text;
+  char chunk[4096];
+  for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, f)) > 0;) text.append(chunk, n);
+  std::fclose(f);
+  return runnableTasks(text);
+}
+
 int threadsOnFreeCores(int threads, double others) {
   if (others < 0) return threads;
   const long taken = std::lround(others);
@@ -98,7 +118,7 @@ FreeCoreWatch::FreeCoreWatch(int threads, double windowSeconds, const CpuSample&
     : threads_(std::max(1, threads)),
       window_(windowSeconds),
       answer_(threads_),
-      nextCheck_(start.wallSeconds + 0.5 * windowSeconds),
+      nextCheck_(0.0),  // the first ask guesses
       last_(start) {}
 
 int FreeCoreWatch::threads() {
@@ -106,6 +126,13 @@ int FreeCoreWatch::threads() {
     return answer_.load(std::memory_order_relaxed);
   std::unique_lock<std::mutex> lock(sampling_, std::try_to_lock);
   if (!lock.owns_lock()) return answer_.load(std::memory_order_relaxed);  // another thread is sampling
+  if (!guessed_) {
+    guessed_ = true;
+    const int running = runnableTasksNow();
+    if (running >= 1) answer_.store(threadsOnFreeCores(threads_, running - 1), std::memory_order_relaxed);
+    nextCheck_.store(last_.wallSeconds + 0.5 * window_, std::memory_order_relaxed);
+    return answer_.load(std::memory_order_relaxed);
+  }
   const CpuSample now = sampleCpu();
   const double others = coresUsedByOthers(last_, now, 0.5 * window_);
   if (others >= 0) {

@@ -38,14 +38,21 @@ double coresUsedByOthers(const CpuSample& from, const CpuSample& to, double mini
 // A sample taken when the program started (the library's static initialization).
 const CpuSample& programStartSample();
 
+// The tasks of the machine runnable at this instant, the caller included: procs_running
+// of /proc/stat (its text given), -1 when it has no such line.
+int runnableTasks(const std::string& procStat);
+int runnableTasksNow();
+
 // Threads worth running on `threads` cores of which other programs use `others` (-1:
 // unknown): one per core they leave, rounded, and at least one. A thread that shares a core
 // with another program gets a part of it only, and the work it holds up waits for it.
 int threadsOnFreeCores(int threads, double others);
 
 // threadsOnFreeCores, kept up to date: measured over windows of `window` seconds (the
-// first, from `start`, half as long), the last answer in between. Any thread may ask;
-// asking costs a clock read except once per window.
+// first, from `start`, half as long), the last answer in between; before the first window
+// ends, a guess from the tasks runnable when first asked (a program that keeps a core busy
+// is always runnable; on an idle machine the caller is alone 99 times in 100). Any thread
+// may ask; asking costs a clock read except once per window.
 class FreeCoreWatch {
  public:
   explicit FreeCoreWatch(int threads, double windowSeconds = 0.2, const CpuSample& start = programStartSample());
@@ -56,8 +63,9 @@ class FreeCoreWatch {
   const double window_;
   std::atomic<int> answer_;
   std::atomic<double> nextCheck_;  // wall seconds
-  std::mutex sampling_;
+  std::mutex sampling_;  // guards what follows
   CpuSample last_;
+  bool guessed_ = false;
 };
 
 }  // namespace aster

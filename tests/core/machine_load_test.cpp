@@ -67,16 +67,23 @@ TEST(MachineLoad, SamplesTheRunningSystem) {
   EXPECT_GE(s.wallSeconds, programStartSample().wallSeconds);
 }
 
+TEST(MachineLoad, ReadsTheRunnableTasks) {
+  EXPECT_EQ(runnableTasks("cpu  1 2 3 4 5 6 7\nctxt 5\nprocs_running 3\nprocs_blocked 0\n"), 3);
+  EXPECT_EQ(runnableTasks("cpu  1 2 3 4 5 6 7\nprocs_blocked 0\n"), -1);
+  EXPECT_EQ(runnableTasks("cpu  1 2 3 4 5 6 7\nprocs_running x\n"), -1);
+  if (sampleCpu().machineBusySeconds >= 0) {
+    EXPECT_GE(runnableTasksNow(), 1);  // this thread
+  }
+}
+
 // A child process that spins on one of this process's cores is another program: the watch
-// leaves it that core.
+// leaves it that core, from its first answer (the child is runnable) and after a window.
 TEST(MachineLoad, TheWatchLeavesACoreToASpinningProcess) {
   cpu_set_t mine;
   ASSERT_EQ(sched_getaffinity(0, sizeof mine, &mine), 0);
   const int cores = CPU_COUNT(&mine);
   if (cores < 2) GTEST_SKIP() << "one core";
   if (sampleCpu().machineBusySeconds < 0) GTEST_SKIP() << "no /proc/stat";
-  FreeCoreWatch watch(cores, 0.2, sampleCpu());
-  EXPECT_EQ(watch.threads(), cores);  // no window yet
   const pid_t child = fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
@@ -85,12 +92,17 @@ TEST(MachineLoad, TheWatchLeavesACoreToASpinningProcess) {
     while (std::chrono::steady_clock::now() < end) ++spins;
     _exit(0);
   }
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  FreeCoreWatch watch(cores, 0.2, sampleCpu());
+  const int guessed = watch.threads();
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  const int threads = watch.threads();
+  const int measured = watch.threads();
   kill(child, SIGKILL);
   waitpid(child, nullptr, 0);
-  EXPECT_GE(threads, 1);
-  EXPECT_LE(threads, cores - 1);
+  EXPECT_GE(guessed, 1);
+  EXPECT_LE(guessed, cores - 1);
+  EXPECT_GE(measured, 1);
+  EXPECT_LE(measured, cores - 1);
 }
 
 }  // namespace
