@@ -39,7 +39,7 @@ WarmedBlock::WarmedBlock(std::size_t bytes) : state_(new State) {
   if (block == MAP_FAILED) return;
   state_->block = block;
   state_->bytes = bytes;
-  adviseHugePages(block, bytes);
+  adviseHugePagesWherePaying(block, bytes);
   try {
     state_->thread = std::thread([s = state_] {
       volatile char* pages = static_cast<char*>(s->block);
@@ -66,12 +66,12 @@ double* WarmedBlock::take(std::size_t bytes) {
   if (!s.block) {
     void* block = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (block == MAP_FAILED) throw std::bad_alloc();
-    adviseHugePages(block, bytes);
+    adviseHugePagesWherePaying(block, bytes);
     s.block = block;
   } else if (bytes != s.bytes) {
     void* block = mremap(s.block, s.bytes, bytes, MREMAP_MAYMOVE);
     if (block == MAP_FAILED) throw std::bad_alloc();
-    if (bytes > s.bytes) adviseHugePages(block, bytes);
+    if (bytes > s.bytes) adviseHugePagesWherePaying(block, bytes);
     s.block = block;
   }
   s.bytes = bytes;

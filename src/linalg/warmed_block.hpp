@@ -6,7 +6,7 @@
 // factorization of the SVK square at N = 256 took 0.95 s against 0.31 s for the others,
 // most of the difference touching its 464 MB factor. The ordering before it (METIS) runs on one thread for 1 s
 // at N = 256 and 4 to 5 s at N = 512, leaving a core idle. A WarmedBlock maps an estimate
-// of the factor's size (transparent huge pages asked for) and touches it page by page on
+// of the factor's size (transparent huge pages asked for where they pay) and touches it page by page on
 // a thread of its own; once the symbolic analysis knows the size, take() stops the
 // thread and fits the mapping to it, the pages touched kept (mremap), and the factor's
 // values live there. Pages given back to the system and mapped again did not do: warmed,

@@ -69,18 +69,41 @@ TEST(HugePages, SmallBlockIsLeftAlone) {
   munmap(block, std::size_t{1} << 20);
 }
 
-// The programs' malloc: a large block from glibc gets huge pages in madvise mode too.
-TEST(HugePages, ProgramMallocAdvisesLargeBlocks) {
+// The programs' malloc: a large block from glibc gets huge pages in madvise mode too, where
+// they pay (hugePagesPay: always, but while the process fits in the free memory a virtual
+// machine's host still backs).
+TEST(HugePages, ProgramMallocAdvisesLargeBlocksWhereTheyPay) {
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
   GTEST_SKIP() << "the sanitizer's malloc";
 #endif
   const std::string mode = hugePageMode();
-  if (mode != "madvise" && mode != "always") GTEST_SKIP() << "transparent huge pages: " << mode;
+  if (mode != "madvise") GTEST_SKIP() << "transparent huge pages: " << mode;
+  const bool pays = hugePagesPay(kBlock);
   void* block = std::malloc(kBlock);
   ASSERT_NE(block, nullptr);
   touch(block, kBlock);
-  EXPECT_GT(hugeKilobytesIn(block, kBlock), 0) << "no huge page in a touched malloc block of 16 MiB";
+  if (pays)
+    EXPECT_GT(hugeKilobytesIn(block, kBlock), 0) << "no huge page in a touched malloc block of 16 MiB";
+  else
+    EXPECT_EQ(hugeKilobytesIn(block, kBlock), 0) << "huge pages where 4 KiB pages are backed";
   std::free(block);
+}
+
+// The free memory in blocks below the reporting order, every zone: /proc/buddyinfo lists
+// the free blocks of each order, 4 KiB pages times 2^order each.
+TEST(HugePages, WarmFreeMemoryIsTheBlocksBelowTheReportingOrder) {
+  const char* buddyinfo =
+      "Node 0, zone      DMA      0      0      0      0      0      0      0      0      1      1      3 \n"
+      "Node 0, zone    DMA32      0      4      2      2      1      2      0      3      3      1    753 \n"
+      "Node 0, zone   Normal  15108   8206   3304   1184   1046    905    908   1121    827    653   1597 \n";
+  const std::size_t page = 4096;
+  const std::size_t dma32 = page * (0 + 4 * 2 + 2 * 4 + 2 * 8 + 1 * 16);
+  const std::size_t normal = page * (15108 + 8206 * 2 + 3304 * 4 + 1184 * 8 + 1046 * 16);
+  EXPECT_EQ(warmFreeBytes(buddyinfo, 5, page), dma32 + normal);
+  EXPECT_EQ(warmFreeBytes(buddyinfo, 1, page), page * 15108);
+  EXPECT_EQ(warmFreeBytes(buddyinfo, 0, page), 0u);
+  EXPECT_EQ(warmFreeBytes("", 5, page), 0u);
+  EXPECT_EQ(warmFreeBytes("Node 0, zone Normal 1 2\n", 5, page), page * (1 + 2 * 2));  // fewer orders listed
 }
 
 }  // namespace
