@@ -1,7 +1,5 @@
 #include "core/worker_pool.hpp"
 
-#include "core/machine_load.hpp"
-
 #include <sched.h>
 #include <signal.h>
 
@@ -14,6 +12,8 @@
 #include <system_error>
 #include <thread>
 #include <vector>
+
+#include "core/machine_load.hpp"
 
 namespace aster {
 

@@ -66,8 +66,8 @@ std::size_t residentBytes() {
   return resident ? static_cast<std::size_t>(std::strtoull(resident, nullptr, 10)) * pageBytes() : 0;
 }
 
-// warmFreeBytes of this machine when the program started; 0 without free page reporting.
-std::size_t warmFreeBytesAtStart() {
+// warmFreeBytes of this machine now; 0 without free page reporting.
+std::size_t warmFreeBytesNow() {
   char order[32], buddyinfo[4096];
   if (!readSmallFile("/sys/module/page_reporting/parameters/page_reporting_order", order, sizeof order)) return 0;
   if (!readSmallFile("/proc/buddyinfo", buddyinfo, sizeof buddyinfo)) return 0;
@@ -79,7 +79,7 @@ std::atomic<bool> footprintReached{false};
 
 bool hugePagesPay(std::size_t bytes) {
   if (footprintReached.load(std::memory_order_relaxed)) return true;
-  static const std::size_t warm = warmFreeBytesAtStart();
+  static const std::size_t warm = warmFreeBytesNow();  // at the first large block
   if (warm == 0 || residentBytes() + bytes >= warm) {
     footprintReached.store(true, std::memory_order_relaxed);
     return true;

@@ -34,8 +34,8 @@ void adviseHugePagesWherePaying(void* data, std::size_t bytes);
 // 6 ms per MiB), while the smaller free blocks, left by the programs that ran before, are
 // still backed. 4 KiB pages come from those first; a huge page needs a whole free 2 MiB
 // block. So huge pages are asked for once the process's resident memory with `bytes`
-// reaches the free memory below the reporting order when the program started
-// (/proc/buddyinfo), and from then on: fresh 4 KiB pages cost more than fresh huge pages.
+// reaches the free memory below the reporting order when the program asked for its first
+// large block (/proc/buddyinfo), and from then on: fresh 4 KiB pages cost more than fresh huge pages.
 // SVK square right after CalculiX's run, against huge pages everywhere: N = 64 0.22-0.25 s
 // against 0.30-0.38 s, N = 128 (250 MiB; 257 MiB of such free blocks) 1.07-1.13 s against
 // 1.64-1.78 s, N = 256 7.0-7.2 s against 7.6-7.9 s; N = 512 (4.4 GiB), one run after
