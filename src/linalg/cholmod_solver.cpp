@@ -8,7 +8,6 @@
 #include <vector>
 
 
-#include "core/machine_load.hpp"
 #include "core/worker_pool.hpp"
 #include "linalg/blas_info.hpp"
 #include "linalg/cholmod_views.hpp"
@@ -44,9 +43,6 @@ constexpr int kFewFactorizations = 3;
 // of idling, and the analysis delayed in half the runs with another program on the other
 // core; N = 128, 124 MB: 0.12 s faster after idling).
 constexpr size_t kWarmedFactorBytes = size_t{64} << 20;
-// Other programs' average use of the machine, in cores, above which no core is left idle
-// for touching the factor ahead (unknown, -1, counts as idle).
-constexpr double kOthersBusy = 0.5;
 
 std::string cholmodStatus(int status) {
   switch (status) {
@@ -200,13 +196,12 @@ void CholmodSolver::analyze(const SparseMatrix& A) {
   factorStorage_.reset();
   if (h_->factor) cholmod_free_factor(&h_->factor, &h_->common);
   // The multifrontal factor of a large matrix: its memory touched while the ordering runs,
-  // on the core the ordering leaves idle. When other programs have been taking about a core
-  // since the program started, the touching only delays the ordering (SVK square N = 128,
-  // a busy loop on the other core: the analysis 0.19-0.87 s with it, 0.19-0.23 s without),
-  // so then the factor's pages are touched where the factorization first writes them.
+  // on the core the ordering leaves idle. When other programs hold that core (the pool then
+  // runs one thread), the touching only delays the ordering (SVK square N = 128, a busy
+  // loop on the other core: the analysis 0.19-0.87 s with it, 0.19-0.23 s without), so then
+  // the factor's pages are touched where the factorization first writes them.
   const size_t factorGuess = kFactorEntriesPerEntry * static_cast<size_t>(M.nonZeros()) * sizeof(double);
-  if (mode_ != Mode::LDLT && factorGuess >= kWarmedFactorBytes && WorkerPool::shared().threads() > 1 &&
-      coresUsedByOthers(programStartSample(), sampleCpu()) < kOthersBusy)
+  if (mode_ != Mode::LDLT && factorGuess >= kWarmedFactorBytes && WorkerPool::shared().threadsNow() > 1)
     factorStorage_ = std::make_unique<WarmedBlock>(factorGuess);
   struct StopWarming {  // an analysis that fails leaves no thread touching memory behind
     std::unique_ptr<WarmedBlock>& storage;
